@@ -1,0 +1,83 @@
+#pragma once
+// Records of the geometry kd-tree file (.kdg): written by kdpm-build-geometry, mapped in place
+// by the runtime. Plain floats (no GLM) so the layout is exactly what SPEC.md says.
+#include <cstdint>
+
+#include "formats/kd_node.h"
+
+namespace kdpm {
+
+// Summary of the scene and tree; section geometry.info, one record.
+struct GeometryInfo {
+    float bounds_min[3];
+    std::uint32_t triangle_count;
+    float bounds_max[3];
+    std::uint32_t node_count;
+    std::uint32_t leaf_index_count;
+    std::uint32_t max_depth;
+    std::uint32_t default_photons;   // from the scene card
+    std::uint32_t default_bounces;
+    std::uint32_t default_k;
+    std::uint32_t up_axis;           // 0, 1 or 2
+    std::uint32_t reserved[2];
+};
+static_assert(sizeof(GeometryInfo) == 64);
+
+// A triangle as the traversal reads it (Möller–Trumbore: one vertex and two edges).
+struct TriangleRecord {
+    float v0[3];
+    std::uint32_t material;       // index into geometry.materials
+    float e1[3];                  // v1 - v0
+    std::uint32_t source_index;   // index of the triangle in the source mesh order
+    float e2[3];                  // v2 - v0
+    std::uint32_t flags;          // bit 0: has shading normals in geometry.normals
+};
+static_assert(sizeof(TriangleRecord) == 48);
+
+// Per-vertex shading normals of a triangle (same order as geometry.triangles).
+struct TriangleNormals {
+    float n[3][3];
+};
+static_assert(sizeof(TriangleNormals) == 36);
+
+enum class MaterialKind : std::uint32_t { diffuse = 0, mirror = 1, glass = 2 };
+
+struct MaterialRecord {
+    float diffuse[3];        // albedo
+    std::uint32_t kind;      // MaterialKind
+    float specular[3];       // mirror reflectance
+    float ior;               // glass index of refraction
+    float transmission[3];   // glass transmittance
+    float reserved0;
+    float emission[3];       // emitted radiance (MTL Ke, glTF emissive)
+    float reserved1;
+};
+static_assert(sizeof(MaterialRecord) == 64);
+
+enum class LightShape : std::uint32_t { triangle = 0, parallelogram = 1 };
+
+// An area light: p0 + u*e1 + v*e2 (triangle: u+v<=1), emitting one-sided along
+// normalize(cross(e1, e2)) with constant radiance.
+struct AreaLightRecord {
+    float p0[3];
+    std::uint32_t shape;          // LightShape
+    float e1[3];
+    std::uint32_t triangle;       // index into geometry.triangles, or 0xffffffff for card lights
+    float e2[3];
+    float area;
+    float radiance[3];
+    float power;                  // pi * area * mean(radiance): the emission sampling weight
+};
+static_assert(sizeof(AreaLightRecord) == 64);
+
+struct CameraRecord {
+    float eye[3];
+    float vfov_degrees;
+    float lookat[3];
+    std::uint32_t width;
+    float up[3];
+    std::uint32_t height;
+};
+static_assert(sizeof(CameraRecord) == 48);
+
+}  // namespace kdpm

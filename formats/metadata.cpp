@@ -1,0 +1,119 @@
+#include "formats/metadata.h"
+
+#include <cereal/archives/json.hpp>
+#include <cereal/types/map.hpp>
+#include <cereal/types/string.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "formats/checksum.h"
+#include "formats/format_error.h"
+
+namespace kdpm {
+
+namespace {
+
+// String-keyed maps as JSON objects ({"max_depth": "40"}), so metadata reads naturally in
+// kdpm-inspect --json; cereal's default would be a list of key/value pairs.
+template <class T>
+void save_object(cereal::JSONOutputArchive& ar, const char* name, const std::map<std::string, T>& map) {
+    ar.setNextName(name);
+    ar.startNode();
+    for (const auto& [k, v] : map) ar(cereal::make_nvp(k, v));
+    ar.finishNode();
+}
+
+template <class T>
+void load_object(cereal::JSONInputArchive& ar, const char* name, std::map<std::string, T>& map) {
+    ar.setNextName(name);
+    ar.startNode();
+    while (const char* key = ar.getNodeName()) {
+        T value{};
+        std::string k = key;
+        ar(value);
+        map.emplace(std::move(k), std::move(value));
+    }
+    ar.finishNode();
+}
+
+}  // namespace
+
+template <class Archive>
+void save(Archive& ar, const Metadata& m) {
+    ar(cereal::make_nvp("tool", m.tool), cereal::make_nvp("tool_version", m.tool_version),
+       cereal::make_nvp("source_path", m.source_path), cereal::make_nvp("source_hash", m.source_hash));
+    save_object(ar, "parameters", m.parameters);
+    save_object(ar, "statistics", m.statistics);
+}
+
+template <class Archive>
+void load(Archive& ar, Metadata& m) {
+    ar(cereal::make_nvp("tool", m.tool), cereal::make_nvp("tool_version", m.tool_version),
+       cereal::make_nvp("source_path", m.source_path), cereal::make_nvp("source_hash", m.source_hash));
+    load_object(ar, "parameters", m.parameters);
+    load_object(ar, "statistics", m.statistics);
+}
+
+std::string metadata_to_json(const Metadata& m) {
+    std::ostringstream out;
+    {
+        cereal::JSONOutputArchive ar(out, cereal::JSONOutputArchive::Options::Default());
+        ar(cereal::make_nvp("kdpm", m));
+    }
+    return out.str();
+}
+
+namespace {
+
+// RapidJSON parses recursively: refuse deep nesting before it sees the text, so a hostile file
+// cannot exhaust the stack. kdpm's own metadata nests three levels.
+bool nesting_within(std::string_view json, int max_depth) {
+    int depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < json.size(); ++i) {
+        char c = json[i];
+        if (in_string) {
+            if (c == '\\') ++i;
+            else if (c == '"') in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > max_depth) return false;
+        } else if (c == '}' || c == ']') {
+            --depth;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+Metadata metadata_from_json(std::string_view json) {
+    if (json.size() > (1u << 24) || !nesting_within(json, 8))
+        throw FormatError("metadata section is not valid kdpm JSON: too large or too deeply nested");
+    Metadata m;
+    try {
+        std::istringstream in{std::string(json)};
+        cereal::JSONInputArchive ar(in);
+        ar(cereal::make_nvp("kdpm", m));
+    } catch (const std::exception& e) {
+        throw FormatError(std::string("metadata section is not valid kdpm JSON: ") + e.what());
+    }
+    return m;
+}
+
+std::string hash_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FormatError("cannot read '" + path + "'");
+    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum64(bytes.data(), bytes.size())));
+    return hex;
+}
+
+const char* kdpm_version() { return KDPM_VERSION; }
+
+}  // namespace kdpm

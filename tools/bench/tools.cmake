@@ -1,0 +1,1 @@
+# tools/bench: executables of this area.

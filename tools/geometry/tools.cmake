@@ -1,0 +1,1 @@
+# tools/geometry: executables of this area.

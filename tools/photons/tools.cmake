@@ -1,0 +1,1 @@
+# tools/photons: executables of this area.

@@ -1,0 +1,1 @@
+# tools/render: executables of this area.

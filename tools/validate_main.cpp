@@ -1,0 +1,26 @@
+// kdpm-validate FILE: exit 0 when the file is sound, else a one-line reason and exit 1.
+#include <iostream>
+
+#include "formats/container_reader.h"
+#include "formats/tree_validation.h"
+#include "tools/cli/args.h"
+#include "tools/cli/run_tool.h"
+
+using namespace kdpm;
+
+int main(int argc, char** argv) {
+    std::string path;
+    bool quiet = false;
+    ValidationOptions options;
+    cli::Args args("kdpm-validate", "Checks a kdpm file: container, checksums and the tree's structural invariants.");
+    args.positional("FILE", &path, "a .kdg, .kdph or .kdp file")
+        .flag("exhaustive", &options.exhaustive, "also run the slow checks (full leaf coverage)")
+        .flag("quiet", &quiet, "print nothing when the file is sound");
+    args.parse(argc, argv);
+    return cli::run_tool("kdpm-validate", [&] {
+        auto reader = ContainerReader::open(path);
+        validate_file(reader, options);
+        if (!quiet) std::cout << path << ": ok (" << file_kind_info(reader.kind()).name << ")\n";
+        return 0;
+    });
+}

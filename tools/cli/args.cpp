@@ -63,6 +63,11 @@ Args& Args::positional(const std::string& meta, std::string* target, const std::
     return *this;
 }
 
+Args& Args::short_name(char letter, const std::string& long_name) {
+    short_names_.push_back({std::string("-") + letter, long_name});
+    return *this;
+}
+
 std::string Args::usage() const {
     std::string u = "usage: " + program_ + " [options]";
     for (const auto& p : positionals_) u += p.required ? " " + p.meta : " [" + p.meta + "]";
@@ -72,6 +77,8 @@ std::string Args::usage() const {
     u += "\noptions:\n";
     for (const auto& o : options_) {
         std::string left = "--" + o.name + (o.meta.empty() ? "" : " " + o.meta);
+        for (const auto& [short_form, long_name] : short_names_)
+            if (long_name == o.name) left = short_form + ", " + left;
         u += "  " + left + std::string(std::max<int>(2, 24 - (int)left.size()), ' ') + o.help + "\n";
     }
     u += "  --help                  show this help\n";
@@ -88,6 +95,9 @@ void Args::parse(int argc, char** argv) {
     bool only_positionals = false;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
+        if (!only_positionals)
+            for (const auto& [short_form, long_name] : short_names_)
+                if (a == short_form) a = "--" + long_name;
         if (!only_positionals && a == "--") {
             only_positionals = true;
             continue;

@@ -26,6 +26,9 @@ public:
     Args& option(const std::string& name, const std::string& meta, const std::string& help,
                  std::function<void(const std::string&)> parse);
 
+    // A customary one-letter spelling of a long option ("-o FILE" for "--output FILE").
+    Args& short_name(char letter, const std::string& long_name);
+
     void parse(int argc, char** argv);  // exits on --help (0) or error (2)
     const std::string& program() const { return program_; }
     std::string usage() const;
@@ -46,6 +49,7 @@ private:
     std::string program_, summary_;
     std::vector<Option> options_;
     std::vector<Positional> positionals_;
+    std::vector<std::pair<std::string, std::string>> short_names_;  // "-o" -> "output"
 };
 
 }  // namespace kdpm::cli

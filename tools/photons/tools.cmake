@@ -1,1 +1,2 @@
 # tools/photons: executables of this area.
+kdpm_tool(kdpm-build-photons photons/build_photons_main.cpp kdpm_builders_photons kdpm_backend_cpu)

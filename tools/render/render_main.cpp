@@ -1,6 +1,7 @@
 // kdpm-render scene.kdg [scene.kdp] -o out.png|out.exr: renders one frame of a scene with
 // photon mapping on the CPU or a CUDA GPU and prints the per-stage timing table.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -70,6 +71,12 @@ int run(int argc, char** argv) {
     OutputShorthand shorthand(argc, argv);
     args.parse(shorthand.argc(), shorthand.argv());
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
+    // Refuse an impossible destination before spending time on the frame.
+    const std::filesystem::path out_folder = std::filesystem::path(output).has_parent_path()
+                                                 ? std::filesystem::path(output).parent_path()
+                                                 : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(out_folder))
+        throw std::runtime_error("cannot write " + output + ": folder " + out_folder.string() + " does not exist");
     ThreadLimit limit(threads);
 
     BackendSelection selected = select_backend(backend);

@@ -4,8 +4,8 @@
 //
 // Regenerate the reference (after checking the new image by eye) from the repository root:
 //   build/bin/kdpm-build-geometry scenes/cornell-box/cornell-box.json -o /tmp/cb.kdg
-//   build/bin/kdpm-render /tmp/cb.kdg --mode direct --width 64 --height 64 --backend cpu \
-//       -o tests/data/cornell_box_direct_64.png
+//   build/bin/kdpm-render /tmp/cb.kdg --mode direct --width 64 --height 64 --backend cpu
+//       -o tests/data/cornell_box_direct_64.png   (one command line)
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -67,3 +67,31 @@ TEST_CASE("kdpm-build-photons refuses bad input in one line", "[photons][tools]"
     CHECK(test::run_tool("kdpm-build-photons " + hits.string() + " -o " + out.string() + " --leaf-size 0").exit_code == 2);
     CHECK(test::run_tool("kdpm-build-photons " + hits.string()).exit_code == 1);
 }
+
+TEST_CASE("The Cornell box goes through kdpm-shoot-photons and kdpm-build-photons", "[photons][tools]") {
+    test::TempDir dir;
+    auto kdg = (dir / "cornell.kdg").string();
+    auto card = test::source_path("scenes/cornell-box/cornell-box.json");
+    REQUIRE(test::run_tool("kdpm-build-geometry " + card + " -o " + kdg + " --quiet").exit_code == 0);
+    auto one = dir / "one.kdph", two = dir / "two.kdph";
+    auto r1 = test::run_tool("kdpm-shoot-photons " + kdg + " -n 20000 --bounces 4 -o " + one.string() + " --threads 1");
+    auto r2 = test::run_tool("kdpm-shoot-photons " + kdg + " -n 20000 --bounces 4 -o " + two.string() +
+                             " --threads 2 --quiet");
+    INFO(r1.output << r2.output);
+    REQUIRE(r1.exit_code == 0);
+    REQUIRE(r2.exit_code == 0);
+    CHECK_THAT(r1.output, Catch::Contains("20000 emitted") && Catch::Contains("rays"));
+    CHECK(slurp(one) == slurp(two));
+    CHECK(test::run_tool("kdpm-validate " + one.string()).exit_code == 0);
+    auto kdp = (dir / "cornell.kdp").string();
+    REQUIRE(test::run_tool("kdpm-build-photons " + one.string() + " -o " + kdp + " --quiet").exit_code == 0);
+    CHECK(test::run_tool("kdpm-validate " + kdp).exit_code == 0);
+    auto file = PhotonMapFile::open(kdp);
+    CHECK(file.info().photon_count > 20000);  // direct hits plus bounces
+    CHECK(file.info().emitted_count == 20000);
+
+    CHECK(test::run_tool("kdpm-shoot-photons " + kdg + " -n 0 -o " + one.string()).exit_code == 2);
+    auto wrong = test::run_tool("kdpm-shoot-photons " + one.string() + " -o " + two.string());
+    CHECK(wrong.exit_code == 1);
+    CHECK_THAT(wrong.output, Catch::StartsWith("kdpm-shoot-photons: error:"));
+}

@@ -13,7 +13,7 @@
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
-#include "tools/photons/short_output_option.h"
+#include "tools/photons/short_options.h"
 
 using namespace kdpm;
 
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
         .option("radius", &radius, "R", "VVH expected query radius (default: estimated for k = 32)", 0.0, 1e30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");
-    photon_tools::ShortOutputOption short_o(argc, argv);
+    photon_tools::ShortOptions short_o(argc, argv, {{"-o", "output"}});
     args.parse(short_o.argc(), short_o.argv());
     return cli::run_tool("kdpm-build-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdp)");

@@ -1,17 +1,19 @@
 #pragma once
-// cli::Args knows only --long options; the photon tools also accept the customary "-o FILE"
-// by rewriting it to "--output FILE" before parsing.
+// cli::Args knows only --long options; the photon tools also accept customary short ones
+// ("-o FILE", "-n COUNT") by rewriting them to their long names before parsing.
+#include <map>
 #include <string>
 #include <vector>
 
 namespace kdpm::photon_tools {
 
-class ShortOutputOption {
+class ShortOptions {
 public:
-    ShortOutputOption(int argc, char** argv) {
+    ShortOptions(int argc, char** argv, const std::map<std::string, std::string>& long_names) {
         for (int i = 0; i < argc; ++i) {
             std::string a = argv[i];
-            storage_.push_back(a == "-o" ? "--output" : a.rfind("-o", 0) == 0 && a.size() > 2 && a[2] != '-' ? "--output=" + a.substr(2) : a);
+            auto it = i > 0 ? long_names.find(a) : long_names.end();
+            storage_.push_back(it != long_names.end() ? "--" + it->second : a);
         }
         for (auto& s : storage_) pointers_.push_back(s.data());
         pointers_.push_back(nullptr);

@@ -1,7 +1,7 @@
 #pragma once
 // One frame, written once for both backends: per sample, the trace, gather and shade passes
 // over the frame arrays, then the sums come back to the host. `Device` supplies arrays
-// (array<T>(n), zero-filled), launches (launch(n, pass)) and copies to the host (to_host).
+// (array<T>(n) zero-filled, scratch<T>(n) not), launches (launch(n, pass)) and copies to the host (to_host).
 #include <cstdint>
 #include <vector>
 
@@ -37,15 +37,17 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightDistributio
     const AovSet& want = plan.settings.aovs;
     StopWatch watch;
 
-    auto emitted = dev.template array<glm::vec3>(pixels);
-    auto vertex_count = dev.template array<std::uint32_t>(pixels);
-    auto vertices = dev.template array<DiffuseVertex>(slots);
-    auto gathered = dev.template array<glm::vec3>(plan.gather_photons ? slots : 0);
+    // Only the sums start at zero; the trace pass writes every pixel's emitted light, vertex
+    // count and AOVs, and the later passes read only the vertex slots it filled.
     auto accum = dev.template array<glm::vec3>(pixels);
-    auto depth = dev.template array<float>(want.depth ? pixels : 0);
-    auto normal = dev.template array<glm::vec3>(want.normal ? pixels : 0);
-    auto position = dev.template array<glm::vec3>(want.position ? pixels : 0);
-    auto triangle = dev.template array<std::int32_t>(want.triangle ? pixels : 0);
+    auto emitted = dev.template scratch<glm::vec3>(pixels);
+    auto vertex_count = dev.template scratch<std::uint32_t>(pixels);
+    auto vertices = dev.template scratch<DiffuseVertex>(slots);
+    auto gathered = dev.template scratch<glm::vec3>(plan.gather_photons ? slots : 0);
+    auto depth = dev.template scratch<float>(want.depth ? pixels : 0);
+    auto normal = dev.template scratch<glm::vec3>(want.normal ? pixels : 0);
+    auto position = dev.template scratch<glm::vec3>(want.position ? pixels : 0);
+    auto triangle = dev.template scratch<std::int32_t>(want.triangle ? pixels : 0);
 
     FrameBuffersView fb;
     fb.width = plan.width;

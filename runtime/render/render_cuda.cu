@@ -28,6 +28,10 @@ struct CudaDevice {
         return a;
     }
     template <class T>
+    Array<T> scratch(std::uint64_t n) {
+        return Array<T>{DeviceBuffer(n * sizeof(T)), n};
+    }
+    template <class T>
     void to_host(const Array<T>& a, std::vector<T>& out) {
         out.resize(a.count);
         a.buffer.download(out.data(), a.count * sizeof(T));

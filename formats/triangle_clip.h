@@ -33,13 +33,17 @@ inline void triangle_vertices(const TriangleRecord& t, float (&v)[3][3]) {
     }
 }
 
+// Plain comparisons (not std::fmin/fmax, which are library calls): callers pass finite values.
+inline float min_of(float a, float b) { return b < a ? b : a; }
+inline float max_of(float a, float b) { return a < b ? b : a; }
+
 // Bounds of (triangle ∩ box), clamped to the box; false when they do not meet. Points on a box
 // face count as inside, so a triangle touching a cell "meets" it.
 inline bool clip_triangle_to_box(const float (&v)[3][3], const AxisBox& box, AxisBox& out) {
     float lo[3], hi[3];
     for (int a = 0; a < 3; ++a) {
-        lo[a] = std::fmin(v[0][a], std::fmin(v[1][a], v[2][a]));
-        hi[a] = std::fmax(v[0][a], std::fmax(v[1][a], v[2][a]));
+        lo[a] = min_of(v[0][a], min_of(v[1][a], v[2][a]));
+        hi[a] = max_of(v[0][a], max_of(v[1][a], v[2][a]));
         if (lo[a] > box.hi[a] || hi[a] < box.lo[a]) return false;
     }
     bool inside = true;
@@ -84,11 +88,11 @@ inline bool clip_triangle_to_box(const float (&v)[3][3], const AxisBox& box, Axi
     for (int a = 0; a < 3; ++a) {
         float l = buf[cur][0][a], h = buf[cur][0][a];
         for (int i = 1; i < n; ++i) {
-            l = std::fmin(l, buf[cur][i][a]);
-            h = std::fmax(h, buf[cur][i][a]);
+            l = min_of(l, buf[cur][i][a]);
+            h = max_of(h, buf[cur][i][a]);
         }
-        out.lo[a] = std::fmax(l, box.lo[a]);
-        out.hi[a] = std::fmin(h, box.hi[a]);
+        out.lo[a] = max_of(l, box.lo[a]);
+        out.hi[a] = min_of(h, box.hi[a]);
         if (out.lo[a] > out.hi[a]) return false;
     }
     return true;

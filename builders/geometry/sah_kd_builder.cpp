@@ -99,11 +99,9 @@ public:
         if (!root.tris.empty()) {
             for (int a = 0; a < 3; ++a) bounds.lo[a] = INFINITY, bounds.hi[a] = -INFINITY;
             for (std::uint32_t g : root.tris) {
-                float v[3][3];
-                triangle_vertices(tris_[g], v);
-                for (int k = 0; k < 3; ++k)
-                    for (int a = 0; a < 3; ++a)
-                        bounds.lo[a] = std::min(bounds.lo[a], v[k][a]), bounds.hi[a] = std::max(bounds.hi[a], v[k][a]);
+                const AxisBox b = triangle_bounds(tris_[g]);
+                for (int a = 0; a < 3; ++a)
+                    bounds.lo[a] = std::min(bounds.lo[a], b.lo[a]), bounds.hi[a] = std::max(bounds.hi[a], b.hi[a]);
             }
         }
         root.cell = bounds;
@@ -112,7 +110,7 @@ public:
         std::vector<std::uint32_t> kept;
         kept.reserve(root.tris.size());
         for (std::uint32_t g : root.tris) {
-            float v[3][3];
+            double v[3][3];
             triangle_vertices(tris_[g], v);
             AxisBox b;
             if (!clip_triangle_to_box(v, bounds, b)) continue;
@@ -219,7 +217,7 @@ private:
                 rmap[i] = static_cast<std::uint32_t>(right.tris.size());
                 right.tris.push_back(g);
             } else {
-                float v[3][3];
+                double v[3][3];
                 triangle_vertices(tris_[g], v);
                 AxisBox b;
                 if (clip_triangle_to_box(v, left.cell, b)) {

@@ -28,10 +28,8 @@ public:
         if (!ids.empty()) {
             for (int a = 0; a < 3; ++a) bounds.lo[a] = INFINITY, bounds.hi[a] = -INFINITY;
             for (std::uint32_t g : ids) {
-                float v[3][3];
-                triangle_vertices(tris_[g], v);
-                for (auto& p : v)
-                    for (int a = 0; a < 3; ++a) bounds.lo[a] = std::min(bounds.lo[a], p[a]), bounds.hi[a] = std::max(bounds.hi[a], p[a]);
+                const AxisBox b = triangle_bounds(tris_[g]);
+                for (int a = 0; a < 3; ++a) bounds.lo[a] = std::min(bounds.lo[a], b.lo[a]), bounds.hi[a] = std::max(bounds.hi[a], b.hi[a]);
             }
         }
         std::vector<std::uint32_t> kept;
@@ -49,7 +47,7 @@ public:
 
 private:
     bool clip(std::uint32_t g, const AxisBox& cell, AxisBox& out) const {
-        float v[3][3];
+        double v[3][3];
         triangle_vertices(tris_[g], v);
         return clip_triangle_to_box(v, cell, out);
     }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "formats/geometry_layout.h"
 
@@ -63,9 +64,16 @@ struct BoundRounding {
     bool outward[3];
 };
 
+// The spacing of floats around x (within a factor of 2: the power of two of its exponent times
+// 2^-23), by bit manipulation: nextafter is a library call and this runs for every clip.
 inline double float_spacing(double x) {
     const float f = std::fabs(static_cast<float>(x));
-    return static_cast<double>(std::nextafter(f, INFINITY)) - f;
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    bits &= 0x7f800000u;
+    float power;
+    std::memcpy(&power, &bits, sizeof power);
+    return std::max(static_cast<double>(power) * 0x1p-23, 1.4e-45);
 }
 
 inline BoundRounding bound_rounding(const double (&v)[3][3]) {

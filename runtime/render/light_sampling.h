@@ -46,8 +46,8 @@ KDPM_HD KDPM_INLINE std::uint32_t pick_light(const LightDistributionView& d, flo
 
 // Outgoing radiance at point x (unit normal n facing the viewer, diffuse albedo) due to direct
 // light: albedo / pi times the irradiance, estimated with `samples` shadow rays (rounded up to a
-// square). Each ray picks a light by power, then a point on it from a stratified grid, so one
-// light is sampled evenly and scenes with many emitting triangles cost no more per ray.
+// square). Each ray picks a light by power, then a point on it, so scenes with many emitting
+// triangles cost no more per ray.
 // `origin` is x already offset off the surface.
 KDPM_HD KDPM_INLINE glm::vec3 direct_light(const GeometryView& g, const LightDistributionView& lights,
                                            const glm::vec3& origin, const glm::vec3& n, const glm::vec3& albedo,
@@ -58,12 +58,18 @@ KDPM_HD KDPM_INLINE glm::vec3 direct_light(const GeometryView& g, const LightDis
     const std::uint32_t total = side * side;
     glm::vec3 irradiance(0.0f);
     for (std::uint32_t j = 0; j < total; ++j) {
+        // One light: its area is stratified on the grid. Several: the choice of light is
+        // stratified instead (the point on it is then uniform, so that it stays independent of
+        // the choice).
+        const bool single = lights.count == 1;
+        const float u = single ? 0.0f : (static_cast<float>(j) + random01(seed, stream, 3u * j)) / total;
         float probability = 0.0f;
-        const std::uint32_t li = pick_light(lights, random01(seed, stream, 3u * j), probability);
+        const std::uint32_t li = pick_light(lights, u, probability);
         if (!(probability > 0.0f)) continue;
         const AreaLightRecord& l = g.lights[li];
-        const float a = (static_cast<float>(j % side) + random01(seed, stream, 3u * j + 1u)) / side;
-        const float b = (static_cast<float>(j / side) + random01(seed, stream, 3u * j + 2u)) / side;
+        const float ra = random01(seed, stream, 3u * j + 1u), rb = random01(seed, stream, 3u * j + 2u);
+        const float a = single ? (static_cast<float>(j % side) + ra) / side : ra;
+        const float b = single ? (static_cast<float>(j / side) + rb) / side : rb;
         const glm::vec3 e1(l.e1[0], l.e1[1], l.e1[2]);
         const glm::vec3 e2(l.e2[0], l.e2[1], l.e2[2]);
         const glm::vec3 light_n = glm::normalize(glm::cross(e1, e2));

@@ -1,0 +1,56 @@
+#pragma once
+// Renders frames on a background thread so the window never waits for a slow frame. A newer
+// submission replaces a pending one and cancels the frame in flight at its next sample boundary
+// (the Renderer's progress callback), so stale frames cost at most one sample pass.
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "runtime/render/renderer.h"
+
+namespace kdpm {
+
+struct FrameJob {
+    std::uint64_t generation = 0;  // bumped by the viewer on every change that makes frames stale
+    RenderSettings settings;       // complete: camera, size, spp, mode, k, AOVs
+    bool preview = false;
+};
+
+struct FinishedFrame {
+    FrameJob job;
+    RenderResult result;
+    std::string error;  // non-empty when the render threw (e.g. an impossible setting)
+};
+
+class RenderWorker {
+public:
+    explicit RenderWorker(Renderer& renderer);
+    ~RenderWorker();  // cancels the frame in flight and joins
+    RenderWorker(const RenderWorker&) = delete;
+    RenderWorker& operator=(const RenderWorker&) = delete;
+
+    void submit(FrameJob job);
+    // A frame finished since the last call, if any (never blocks).
+    std::optional<FinishedFrame> take();
+    // Blocks until a frame finishes (for scripted runs).
+    FinishedFrame wait();
+    bool idle() const;
+
+private:
+    void loop();
+
+    Renderer& renderer_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    std::optional<FrameJob> pending_;
+    std::optional<FinishedFrame> finished_;
+    std::uint64_t newest_generation_ = 0;
+    bool busy_ = false;
+    bool stop_ = false;
+    std::thread thread_;
+};
+
+}  // namespace kdpm

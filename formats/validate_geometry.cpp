@@ -160,15 +160,20 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
                 if (lo[axis] <= split) stack.push_back({e.node + 1, e.depth + 1, lo_cell});
                 continue;
             }
+            // The cell shrunk by eps on each axis: a triangle only touching a face, or lying
+            // within eps of it, need not be listed. So a cell thinner than 2 eps requires
+            // nothing; a flat axis (a flat scene) is not shrunk.
             AxisBox inner = e.cell;
+            bool too_thin = false;
             for (int a = 0; a < 3; ++a) {
-                if (inner.hi[a] - inner.lo[a] > 2 * eps) {
-                    inner.lo[a] += eps;
-                    inner.hi[a] -= eps;
-                }
+                const float width = inner.hi[a] - inner.lo[a];
+                if (width == 0.0f) continue;
+                if (width <= 2 * eps) too_thin = true;
+                inner.lo[a] += eps;
+                inner.hi[a] -= eps;
             }
             AxisBox clipped;
-            if (!clip_triangle_to_box(v, inner, clipped)) continue;
+            if (too_thin || !clip_triangle_to_box(v, inner, clipped)) continue;
             const auto first = sorted.begin() + n.first(), last = first + n.count();
             if (!std::binary_search(first, last, ti))
                 fail(file, "triangle " + std::to_string(ti) + " overlaps leaf node " + std::to_string(e.node) +

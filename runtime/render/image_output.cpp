@@ -48,6 +48,8 @@ void write_atomically(const std::filesystem::path& destination, int width, int h
         throw std::runtime_error("cannot write " + destination.string() + ": " + why);
     };
 
+    std::error_code exists_ec;
+    if (!std::filesystem::is_directory(folder, exists_ec)) fail("folder " + folder.string() + " does not exist");
     auto out = OIIO::ImageOutput::create(temp.string());
     if (!out) fail("unsupported image format '" + destination.extension().string() + "'");
     OIIO::ImageSpec spec(width, height, nch, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);

@@ -12,7 +12,8 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
-        run_frame(device, scene_.geometry, make_gather_pass(scene_.photons, plan), plan, linear, aovs, times);
+        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings.k);
+        run_frame(device, scene_.geometry, gather, plan, linear, aovs, times);
     }
 
 private:

@@ -63,12 +63,29 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CudaDevice device;
-        run_frame(device, device_geometry_, make_gather_pass(device_photons_, plan), plan, linear, aovs, times);
+        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings.k);
+        run_frame(device, device_geometry_, gather, plan, linear, aovs, times);
     }
     double upload_ms() const override { return upload_ms_; }
 
 private:
-    static PhotonMaps upload_photon_maps(std::vector<DeviceBuffer>&, const PhotonMaps& host) { return host; }
+    static PhotonMapView upload_map(std::vector<DeviceBuffer>& owned, const PhotonMapView& h) {
+        PhotonMapView d = h;
+        d.nodes = upload(owned, h.nodes, h.node_count);
+        d.x = upload(owned, h.x, h.photon_count);
+        d.y = upload(owned, h.y, h.photon_count);
+        d.z = upload(owned, h.z, h.photon_count);
+        d.power = upload(owned, h.power, h.photon_count);
+        d.directions = upload(owned, h.directions, h.photon_count);
+        d.flags = upload(owned, h.flags, h.photon_count);
+        return d;
+    }
+    static PhotonMaps upload_photon_maps(std::vector<DeviceBuffer>& owned, const PhotonMaps& host) {
+        PhotonMaps d = host;
+        d.global = upload_map(owned, host.global);
+        d.caustic = upload_map(owned, host.caustic);
+        return d;
+    }
 
     SceneViews scene_;
     std::vector<DeviceBuffer> owned_;

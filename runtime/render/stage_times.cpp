@@ -19,7 +19,7 @@ std::string format_stage_table(const StageTimes& t, double load_ms) {
     row(out, "photon gather", t.photon_gather_ms);
     row(out, "shading", t.shading_ms);
     row(out, "post", t.post_ms);
-    if (t.transfer_ms > 0) row(out, "transfers", t.transfer_ms);
+    if (t.transfer_ms > 0) row(out, "buffers+copies", t.transfer_ms);
     row(out, "total (frame)", t.total_ms());
     return out;
 }

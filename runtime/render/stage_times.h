@@ -11,7 +11,7 @@ struct StageTimes {
     double photon_gather_ms = 0;
     double shading_ms = 0;
     double post_ms = 0;
-    double transfer_ms = 0;  // CUDA backend: frame buffers to and from the device
+    double transfer_ms = 0;  // frame buffer allocation and copies (CUDA: to and from the device)
     double total_ms() const { return ray_tracing_ms + photon_gather_ms + shading_ms + post_ms + transfer_ms; }
 };
 

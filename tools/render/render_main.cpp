@@ -1,6 +1,7 @@
 // kdpm-render scene.kdg [scene.kdp] -o out.png|out.exr: renders one frame of a scene with
 // photon mapping on the CPU or a CUDA GPU and prints the per-stage timing table.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
+#include "tools/render/output_shorthand.h"
 
 using namespace kdpm;
 
@@ -46,28 +48,35 @@ int run(int argc, char** argv) {
     args.positional("scene.kdg", &geometry_path, "geometry kd-tree from kdpm-build-geometry")
         .positional("scene.kdp", &photon_path, "photon kd-tree from kdpm-build-photons (not needed for --mode direct)",
                     false)
-        .option("-o", &output, "FILE", "output image; format by extension (.png, .exr, ...)")
-        .option("--width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
-        .option("--height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
-        .option("--spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
-        .option("--k", &k, "N", "photons per radiance estimate (default: the scene card's)", 1, 4096)
-        .option("--mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
+        .option("output", &output, "FILE", "output image (also -o FILE); format by extension (.png, .exr, ...)")
+        .option("width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
+        .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
+        .option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
+        .option("k", &k, "N", "photons per radiance estimate, at most 256 (default: the scene card's)", 1, 256)
+        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
-        .option("--light-samples", &light_samples, "N", "shadow rays per light at each diffuse point (default 16)", 1,
+        .option("light-samples", &light_samples, "N", "shadow rays per light at each diffuse point (default 16)", 1,
                 4096)
-        .option("--max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
-        .option("--backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
+        .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
+        .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
-        .option("--aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
+        .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
                 [&](const std::string& v) { settings.aovs = parse_aovs(v); })
-        .option("--exposure", &exposure, "STOPS", "exposure in stops (default 0)", -32.0, 32.0)
-        .option("--tonemap", "reinhard|aces|none", "tone mapping for 8-bit outputs (default aces)",
+        .option("exposure", &exposure, "STOPS", "exposure in stops (default 0)", -32.0, 32.0)
+        .option("tonemap", "reinhard|aces|none", "tone mapping for 8-bit outputs (default aces)",
                 [&](const std::string& v) { settings.post.tone_map = parse_tone_map(v); })
-        .flag("--bloom", &settings.post.bloom, "add a glow around bright pixels")
-        .option("--threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
-        .flag("--quiet", &quiet, "print nothing but errors");
-    args.parse(argc, argv);
+        .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
+        .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
+        .flag("quiet", &quiet, "print nothing but errors");
+    OutputShorthand shorthand(argc, argv);
+    args.parse(shorthand.argc(), shorthand.argv());
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
+    // Refuse an impossible destination before spending time on the frame.
+    const std::filesystem::path out_folder = std::filesystem::path(output).has_parent_path()
+                                                 ? std::filesystem::path(output).parent_path()
+                                                 : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(out_folder))
+        throw std::runtime_error("cannot write " + output + ": folder " + out_folder.string() + " does not exist");
     ThreadLimit limit(threads);
 
     BackendSelection selected = select_backend(backend);

@@ -42,24 +42,20 @@ Image normal_view(const RenderResult& frame) {
     return out;
 }
 
-// Photon density as seen by the gather: the luminance of the photons-only estimate (rendered in
-// mode photons for this view), log-scaled between the frame's 1st and 99th percentiles.
-Image density_view(const RenderResult& frame) {
-    const Image& lin = frame.linear;
-    Image out(lin.width, lin.height);
+// Log-scaled heat map of the density between the frame's 1st and 99th percentiles.
+Image density_view(const RenderResult& frame, const std::vector<float>& density) {
+    Image out(frame.linear.width, frame.linear.height);
+    if (density.size() != out.pixel_count()) return out;
     std::vector<float> logs;
-    std::vector<float> lum(lin.pixel_count());
-    for (std::size_t i = 0; i < lum.size(); ++i) {
-        lum[i] = 0.2126f * lin.rgb[i * 3] + 0.7152f * lin.rgb[i * 3 + 1] + 0.0722f * lin.rgb[i * 3 + 2];
-        if (lum[i] > 0.0f && std::isfinite(lum[i])) logs.push_back(std::log(lum[i]));
-    }
+    for (float d : density)
+        if (d > 0.0f && std::isfinite(d)) logs.push_back(std::log(d));
     if (logs.empty()) return out;
     std::sort(logs.begin(), logs.end());
     const float lo = logs[logs.size() / 100], hi = logs[logs.size() - 1 - logs.size() / 100];
     const float span = hi > lo ? hi - lo : 1.0f;
-    for (std::size_t i = 0; i < lum.size(); ++i) {
-        if (!(lum[i] > 0.0f) || !std::isfinite(lum[i])) continue;
-        const glm::vec3 c = heat_color((std::log(lum[i]) - lo) / span);
+    for (std::size_t i = 0; i < density.size(); ++i) {
+        if (!(density[i] > 0.0f) || !std::isfinite(density[i])) continue;
+        const glm::vec3 c = heat_color(0.1f + 0.9f * (std::log(density[i]) - lo) / span);
         for (int k = 0; k < 3; ++k) out.rgb[i * 3 + k] = c[k];
     }
     return out;
@@ -76,11 +72,11 @@ glm::vec3 heat_color(float t) {
     return glm::mix(stops[i], stops[i + 1], x - static_cast<float>(i));
 }
 
-Image compose_view(const RenderResult& frame, const ViewOptions& options) {
+Image compose_view(const RenderResult& frame, const std::vector<float>& density, const ViewOptions& options) {
     switch (options.view) {
         case ViewKind::depth: return depth_view(frame);
         case ViewKind::normal: return normal_view(frame);
-        case ViewKind::photon_density: return density_view(frame);
+        case ViewKind::photon_density: return density_view(frame, density);
         case ViewKind::shaded: break;
     }
     PostSettings post;

@@ -14,7 +14,8 @@
 namespace kdpm {
 
 // The view alone, at the frame's own resolution, values in [0, 1] (sRGB-encoded for shaded).
-Image compose_view(const RenderResult& frame, const ViewOptions& options);
+// `density`: per-pixel photon density for the density view (empty otherwise).
+Image compose_view(const RenderResult& frame, const std::vector<float>& density, const ViewOptions& options);
 
 // Nearest-neighbour resize (previews are shown blocky rather than blurred: it reads as "not final").
 Image resize_nearest(const Image& source, int width, int height);

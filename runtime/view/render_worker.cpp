@@ -1,5 +1,7 @@
 #include "runtime/view/render_worker.h"
 
+#include "runtime/view/photon_density.h"
+
 #include <exception>
 #include <utility>
 
@@ -10,7 +12,8 @@ namespace {
 struct FrameCancelled {};
 }  // namespace
 
-RenderWorker::RenderWorker(Renderer& renderer) : renderer_(renderer), thread_([this] { loop(); }) {}
+RenderWorker::RenderWorker(Renderer& renderer, const PhotonMapView& density_map)
+    : renderer_(renderer), density_map_(density_map), thread_([this] { loop(); }) {}
 
 RenderWorker::~RenderWorker() {
     {
@@ -72,6 +75,9 @@ void RenderWorker::loop() {
         bool cancelled = false;
         try {
             frame.result = renderer_.render(settings);
+            if (job.density_k > 0)
+                frame.density = photon_density(density_map_, frame.result.aovs.position, frame.result.aovs.normal,
+                                               job.density_k);
         } catch (const FrameCancelled&) {
             cancelled = true;
         } catch (const std::exception& e) {

@@ -8,7 +8,9 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "runtime/photons/photon_map_view.h"
 #include "runtime/render/renderer.h"
 
 namespace kdpm {
@@ -17,17 +19,20 @@ struct FrameJob {
     std::uint64_t generation = 0;  // bumped by the viewer on every change that makes frames stale
     RenderSettings settings;       // complete: camera, size, spp, mode, k, AOVs
     bool preview = false;
+    std::uint32_t density_k = 0;   // > 0: also estimate the photon density (needs position AOVs)
 };
 
 struct FinishedFrame {
     FrameJob job;
     RenderResult result;
+    std::vector<float> density;  // per pixel, when the job asked for it
     std::string error;  // non-empty when the render threw (e.g. an impossible setting)
 };
 
 class RenderWorker {
 public:
-    explicit RenderWorker(Renderer& renderer);
+    // density_map: host arrays of the photon map that density jobs search (may be empty).
+    RenderWorker(Renderer& renderer, const PhotonMapView& density_map);
     ~RenderWorker();  // cancels the frame in flight and joins
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -43,6 +48,7 @@ private:
     void loop();
 
     Renderer& renderer_;
+    PhotonMapView density_map_;
     mutable std::mutex mutex_;
     std::condition_variable wake_, done_;
     std::optional<FrameJob> pending_;

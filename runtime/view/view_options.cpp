@@ -1,6 +1,7 @@
 #include "runtime/view/view_options.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace kdpm {
 
@@ -12,6 +13,14 @@ const char* view_name(ViewKind v) {
         case ViewKind::photon_density: return "photon density";
     }
     return "?";
+}
+
+ViewKind parse_view(std::string_view text) {
+    if (text == "shaded") return ViewKind::shaded;
+    if (text == "depth") return ViewKind::depth;
+    if (text == "normal") return ViewKind::normal;
+    if (text == "density") return ViewKind::photon_density;
+    throw std::invalid_argument("expected shaded, depth, normal or density, got '" + std::string(text) + "'");
 }
 
 const char* tone_map_name(ToneMap t) {

@@ -3,6 +3,7 @@
 // Pure state and rules (ranges, which modes need a photon map) so they are testable without GL.
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "runtime/render/post_process.h"
 #include "runtime/render/render_settings.h"
@@ -11,6 +12,7 @@ namespace kdpm {
 
 enum class ViewKind { shaded, depth, normal, photon_density };
 const char* view_name(ViewKind v);
+ViewKind parse_view(std::string_view text);  // shaded, depth, normal, density; throws std::invalid_argument
 const char* tone_map_name(ToneMap t);
 
 struct ViewOptions {

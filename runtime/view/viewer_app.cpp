@@ -46,14 +46,18 @@ class Viewer {
 public:
     Viewer(const ViewerConfig& cfg, const LoadedScene& scene, Renderer& renderer, GlWindow& window)
         : cfg_(cfg), renderer_(renderer), window_(window),
-          camera_(scene.views().camera, scene.views().geometry.info), worker_(renderer),
+          camera_(scene.views().camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
           schedule_(1, 1, cfg.max_spp, cfg.preview_divisor) {
         image_size(cfg, scene.views().camera, width_, height_);
         schedule_ = RefinementSchedule(width_, height_, cfg.max_spp, cfg.preview_divisor);
         have_photons_ = !scene.views().photons.empty();
+        photons_ = scene.views().photons;
         const std::uint32_t scene_k = scene.views().geometry.info.default_k;
         options_.k = clamp_k(cfg.k ? cfg.k : (scene_k ? scene_k : 100));
         options_.mode = cfg.mode ? *cfg.mode : (have_photons_ ? RenderMode::photons : RenderMode::direct);
+        options_.view = cfg.view;
+        options_.exposure_stops = cfg.exposure_stops;
+        options_.tone_map = cfg.tone_map;
         displayed_ = Image(static_cast<int>(width_), static_cast<int>(height_));
     }
 
@@ -111,9 +115,16 @@ private:
         s.height = step.height;
         s.spp = step.spp;
         s.k = options_.k;
-        // The density view shows the photons-only estimate.
-        s.mode = options_.view == ViewKind::photon_density ? RenderMode::photons : options_.mode;
+        s.mode = options_.mode;
         s.light_samples = cfg_.light_samples;
+        if (options_.view == ViewKind::photon_density) {
+            // The density comes from a k-nearest search at each pixel's first hit; the frame
+            // itself only has to supply the hit points, so it is rendered as cheaply as possible.
+            s.mode = RenderMode::direct;
+            s.light_samples = 1;
+            s.aovs.position = true;
+            job.density_k = options_.k;
+        }
         s.camera = camera_.record();
         s.camera->width = width_;
         s.camera->height = height_;
@@ -235,8 +246,12 @@ private:
                           s.photon_gather_ms, s.shading_ms, s.post_ms + s.transfer_ms);
             t << line << "\n";
         }
-        std::snprintf(line, sizeof line, "k %u  %s  photons %s", options_.k, render_mode_name(options_.mode),
-                      have_photons_ ? "loaded" : "none");
+        if (have_photons_)
+            std::snprintf(line, sizeof line, "k %u  mode %s  %u global + %u caustic photons", options_.k,
+                          render_mode_name(options_.mode), photons_.global.photon_count,
+                          photons_.caustic.photon_count);
+        else
+            std::snprintf(line, sizeof line, "k %u  mode %s  no photon map", options_.k, render_mode_name(options_.mode));
         t << line << "\n";
         std::snprintf(line, sizeof line, "%s  exposure %+.1f  %s  H help", view_name(options_.view),
                       options_.exposure_stops, tone_map_name(options_.tone_map));
@@ -247,7 +262,7 @@ private:
     // Recomposes (view, scale to full size, text) and uploads.
     void present() {
         if (last_) {
-            plain_ = resize_nearest(compose_view(last_->result, options_), int(width_), int(height_));
+            plain_ = resize_nearest(compose_view(last_->result, last_->density, options_), int(width_), int(height_));
             displayed_ = plain_;
             draw_overlay(displayed_, stats_text(), options_);
         }
@@ -282,6 +297,7 @@ private:
     ViewOptions options_;
     std::uint32_t width_ = 0, height_ = 0;
     bool have_photons_ = false;
+    PhotonMaps photons_;
     std::uint64_t generation_ = 0, shown_generation_ = 0;
     std::optional<FinishedFrame> last_;
     Image plain_, displayed_;
@@ -301,6 +317,8 @@ int run_viewer(const ViewerConfig& cfg) {
     if (cfg.mode && *cfg.mode != RenderMode::direct && scene.views().photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(*cfg.mode) +
                                  " needs a photon map (.kdp); give one or use --mode direct");
+    if (cfg.view == ViewKind::photon_density && scene.views().photons.empty())
+        throw std::runtime_error("the density view needs a photon map (.kdp)");
     std::uint32_t w = 0, h = 0;
     image_size(cfg, scene.views().camera, w, h);
     Renderer renderer(scene.views(), selected.kind);

@@ -6,6 +6,7 @@
 
 #include "runtime/backend/backend_kind.h"
 #include "runtime/render/render_settings.h"
+#include "runtime/view/view_options.h"
 
 namespace kdpm {
 
@@ -19,6 +20,9 @@ struct ViewerConfig {
     std::uint32_t max_spp = 16;           // progressive refinement stops here
     std::uint32_t preview_divisor = 4;    // preview resolution = full / divisor per axis
     std::uint32_t light_samples = 16;
+    ViewKind view = ViewKind::shaded;
+    float exposure_stops = 0.0f;
+    ToneMap tone_map = ToneMap::aces;
     bool quiet = false;
     // Scripted runs: `fly_frames` moving frames (previews), then `frames` full-resolution frames,
     // then the screenshot, then exit.

@@ -309,8 +309,8 @@ private:
 }  // namespace
 
 int run_viewer(const ViewerConfig& cfg) {
-    BackendSelection selected = select_backend(cfg.backend);
-    if (!selected.notice.empty() && !cfg.quiet) std::fprintf(stderr, "kdpm-view: %s\n", selected.notice.c_str());
+    // Input is checked, and the window opened, before anything else is printed, so that a bad
+    // file or a missing display is the only line of output.
     std::optional<std::filesystem::path> photons;
     if (!cfg.photon_path.empty()) photons = cfg.photon_path;
     LoadedScene scene = LoadedScene::load(cfg.geometry_path, photons);
@@ -321,8 +321,10 @@ int run_viewer(const ViewerConfig& cfg) {
         throw std::runtime_error("the density view needs a photon map (.kdp)");
     std::uint32_t w = 0, h = 0;
     image_size(cfg, scene.views().camera, w, h);
-    Renderer renderer(scene.views(), selected.kind);
     GlWindow window(static_cast<int>(w), static_cast<int>(h), "kdpm-view");
+    BackendSelection selected = select_backend(cfg.backend);
+    if (!selected.notice.empty() && !cfg.quiet) std::fprintf(stderr, "kdpm-view: %s\n", selected.notice.c_str());
+    Renderer renderer(scene.views(), selected.kind);
     Viewer viewer(cfg, scene, renderer, window);
     const bool scripted = cfg.frames > 0 || cfg.fly_frames > 0 || !cfg.screenshot.empty();
     if (scripted) return viewer.run_scripted();

@@ -75,9 +75,11 @@ void RenderWorker::loop() {
         bool cancelled = false;
         try {
             frame.result = renderer_.render(settings);
+            StopWatch watch;
             if (job.density_k > 0)
                 frame.density = photon_density(density_map_, frame.result.aovs.position, frame.result.aovs.normal,
                                                job.density_k);
+            frame.density_ms = watch.lap_ms();
         } catch (const FrameCancelled&) {
             cancelled = true;
         } catch (const std::exception& e) {

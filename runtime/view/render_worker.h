@@ -26,6 +26,7 @@ struct FinishedFrame {
     FrameJob job;
     RenderResult result;
     std::vector<float> density;  // per pixel, when the job asked for it
+    double density_ms = 0.0;
     std::string error;  // non-empty when the render threw (e.g. an impossible setting)
 };
 

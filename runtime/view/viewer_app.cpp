@@ -83,12 +83,14 @@ public:
 
     int run_scripted() {
         if (!cfg_.quiet) std::printf("%s\n", key_help_text().c_str());
-        // Fly: hold W and drag slowly right, one preview per simulated 1/30 s.
+        // Fly: hold W while the mouse sways the view gently right and back left (one full sway
+        // over the flight, so the path ends facing the way it started), one preview per 1/30 s.
         for (int i = 0; i < cfg_.fly_frames && !window_.should_close(); ++i) {
             FlyInput in;
             in.forward = 1.0f;
             camera_.move(in, 1.0f / 30.0f);
-            camera_.look(3.0f, 0.0f);
+            const float phase = 6.2831853f * static_cast<float>(i) / static_cast<float>(cfg_.fly_frames);
+            camera_.look(2.0f * std::cos(phase), 0.0f);
             schedule_.restart(true);
             render_and_show_blocking(/*refine=*/false);
         }
@@ -226,7 +228,7 @@ private:
             const auto& r = last_->result;
             t << " | " << r.linear.width << "x" << r.linear.height << " " << last_->job.settings.spp << " spp";
             char ms[32];
-            std::snprintf(ms, sizeof ms, "%.1f ms", r.times.total_ms());
+            std::snprintf(ms, sizeof ms, "%.1f ms", r.times.total_ms() + last_->density_ms);
             t << " | " << ms;
         }
         t << " | k " << options_.k << " | " << render_mode_name(options_.mode) << " | " << view_name(options_.view);
@@ -242,8 +244,9 @@ private:
                           r.linear.height, last_->job.preview ? " (moving)" : "", last_->job.settings.spp);
             t << line << "\n";
             const StageTimes& s = r.times;
+            // The density view's k-nearest search counts as gathering.
             std::snprintf(line, sizeof line, "trace %.1f gather %.1f shade %.1f post %.1f ms", s.ray_tracing_ms,
-                          s.photon_gather_ms, s.shading_ms, s.post_ms + s.transfer_ms);
+                          s.photon_gather_ms + last_->density_ms, s.shading_ms, s.post_ms + s.transfer_ms);
             t << line << "\n";
         }
         if (have_photons_)

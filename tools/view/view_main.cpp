@@ -2,6 +2,7 @@
 // progressive refinement, views, stats), or a scripted run that saves a screenshot.
 #include <string>
 
+#include "runtime/backend/thread_limit.h"
 #include "runtime/view/viewer_config.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
@@ -13,6 +14,7 @@ namespace {
 int run(int argc, char** argv) {
     ViewerConfig cfg;
     double exposure = 0.0;
+    int threads = 0;
     int width = 0, height = 0, k = 0, spp = 16, preview = 4, light_samples = 16;
     cli::Args args("kdpm-view", "Interactive viewer for a kdpm scene (geometry kd-tree + optional photon kd-tree).");
     args.positional("scene.kdg", &cfg.geometry_path, "geometry kd-tree from kdpm-build-geometry")
@@ -37,6 +39,7 @@ int run(int argc, char** argv) {
         .option("fly", &cfg.fly_frames, "N", "scripted: first fly forward for N preview frames", 1, 100000)
         .option("screenshot", &cfg.screenshot, "FILE", "scripted: save the last frame as displayed (PNG, ...)")
         .flag("overlay", &cfg.overlay, "scripted screenshots include the stats text")
+        .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
         .flag("quiet", &cfg.quiet, "print nothing but errors");
     args.parse(argc, argv);
     cfg.exposure_stops = static_cast<float>(exposure);
@@ -46,6 +49,7 @@ int run(int argc, char** argv) {
     cfg.max_spp = static_cast<std::uint32_t>(spp);
     cfg.preview_divisor = static_cast<std::uint32_t>(preview);
     cfg.light_samples = static_cast<std::uint32_t>(light_samples);
+    ThreadLimit limit(threads);
     return run_viewer(cfg);
 }
 

@@ -29,7 +29,8 @@ struct FramePlan {
 };
 
 template <class Device>
-void run_frame(Device& dev, const GeometryView& geometry, const PhotonGatherPass& gather_template,
+void run_frame(Device& dev, const GeometryView& geometry, const LightDistributionView& lights,
+               const PhotonGatherPass& gather_template,
                const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
     const std::uint64_t slots = pixels * kMaxDiffuseVertices;
@@ -73,8 +74,8 @@ void run_frame(Device& dev, const GeometryView& geometry, const PhotonGatherPass
             times.photon_gather_ms += watch.lap_ms();
         }
 
-        ShadePass shade{geometry, fb, s, plan.settings.light_samples, plan.direct_light, plan.gather_photons,
-                        plan.epsilon};
+        ShadePass shade{geometry, lights, fb, s, plan.settings.light_samples, plan.direct_light,
+                        plan.gather_photons, plan.epsilon};
         dev.launch(pixels, shade);
         times.shading_ms += watch.lap_ms();
         if (plan.settings.progress) plan.settings.progress(static_cast<double>(s + 1) / spp);

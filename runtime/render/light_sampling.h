@@ -26,43 +26,61 @@ KDPM_HD KDPM_INLINE glm::vec3 point_on_light(const AreaLightRecord& l, float a, 
     return p0 + a * e1 + b * e2;
 }
 
+// The lights as a discrete distribution by emitted power: cdf[i] = sum of power[0..i] / total.
+struct LightDistributionView {
+    const float* cdf = nullptr;  // one per light; nullptr or count 0: no light emits
+    std::uint32_t count = 0;
+};
+
+// Index i with cdf[i-1] <= u < cdf[i] (binary search), and its probability.
+KDPM_HD KDPM_INLINE std::uint32_t pick_light(const LightDistributionView& d, float u, float& probability) {
+    std::uint32_t lo = 0, hi = d.count - 1;
+    while (lo < hi) {
+        const std::uint32_t mid = (lo + hi) / 2;
+        if (u < d.cdf[mid]) hi = mid;
+        else lo = mid + 1;
+    }
+    probability = d.cdf[lo] - (lo > 0 ? d.cdf[lo - 1] : 0.0f);
+    return lo;
+}
+
 // Outgoing radiance at point x (unit normal n facing the viewer, diffuse albedo) due to direct
-// light: albedo / pi * sum over lights of the estimated irradiance. `samples` per light are
-// stratified on a grid (rounded up to a square), jittered by (seed, stream).
-KDPM_HD KDPM_INLINE glm::vec3 direct_light(const GeometryView& g, const glm::vec3& x, const glm::vec3& n,
-                                           const glm::vec3& albedo, std::uint32_t samples, float epsilon,
-                                           std::uint32_t seed, std::uint32_t stream) {
-    glm::vec3 irradiance(0.0f);
+// light: albedo / pi times the irradiance, estimated with `samples` shadow rays (rounded up to a
+// square). Each ray picks a light by power, then a point on it from a stratified grid, so one
+// light is sampled evenly and scenes with many emitting triangles cost no more per ray.
+// `origin` is x already offset off the surface.
+KDPM_HD KDPM_INLINE glm::vec3 direct_light(const GeometryView& g, const LightDistributionView& lights,
+                                           const glm::vec3& origin, const glm::vec3& n, const glm::vec3& albedo,
+                                           std::uint32_t samples, std::uint32_t seed, std::uint32_t stream) {
+    if (lights.count == 0 || lights.cdf == nullptr) return glm::vec3(0.0f);
     std::uint32_t side = 1;
     while (side * side < samples) ++side;
-    const float inv_n = 1.0f / static_cast<float>(side * side);
-    const glm::vec3 origin = x + epsilon * n;
-    for (std::uint32_t li = 0; li < g.light_count; ++li) {
+    const std::uint32_t total = side * side;
+    glm::vec3 irradiance(0.0f);
+    for (std::uint32_t j = 0; j < total; ++j) {
+        float probability = 0.0f;
+        const std::uint32_t li = pick_light(lights, random01(seed, stream, 3u * j), probability);
+        if (!(probability > 0.0f)) continue;
         const AreaLightRecord& l = g.lights[li];
+        const float a = (static_cast<float>(j % side) + random01(seed, stream, 3u * j + 1u)) / side;
+        const float b = (static_cast<float>(j / side) + random01(seed, stream, 3u * j + 2u)) / side;
         const glm::vec3 e1(l.e1[0], l.e1[1], l.e1[2]);
         const glm::vec3 e2(l.e2[0], l.e2[1], l.e2[2]);
         const glm::vec3 light_n = glm::normalize(glm::cross(e1, e2));
+        const glm::vec3 d = point_on_light(l, a, b) - origin;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) continue;
+        const glm::vec3 wi = d / glm::sqrt(dist2);
+        const float cos_x = glm::dot(n, wi);
+        const float cos_y = -glm::dot(light_n, wi);
+        if (cos_x <= 0.0f || cos_y <= 0.0f) continue;
+        // The segment stops just short of the light, which may itself be scene geometry.
+        const Ray shadow{origin, 0.0f, d, 1.0f - 1e-4f};
+        if (occluded(g, shadow)) continue;
         const glm::vec3 radiance(l.radiance[0], l.radiance[1], l.radiance[2]);
-        glm::vec3 sum(0.0f);
-        for (std::uint32_t j = 0; j < side * side; ++j) {
-            const float a = (static_cast<float>(j % side) + random01(seed, stream * 131u + li, 2u * j)) / side;
-            const float b = (static_cast<float>(j / side) + random01(seed, stream * 131u + li, 2u * j + 1u)) / side;
-            const glm::vec3 y = point_on_light(l, a, b);
-            const glm::vec3 d = y - origin;
-            const float dist2 = glm::dot(d, d);
-            if (!(dist2 > 0.0f)) continue;
-            const glm::vec3 wi = d / glm::sqrt(dist2);
-            const float cos_x = glm::dot(n, wi);
-            const float cos_y = -glm::dot(light_n, wi);
-            if (cos_x <= 0.0f || cos_y <= 0.0f) continue;
-            // The segment stops just short of the light, which may itself be scene geometry.
-            Ray shadow{origin, 0.0f, d, 1.0f - 1e-4f};
-            if (occluded(g, shadow)) continue;
-            sum += radiance * (cos_x * cos_y / dist2);
-        }
-        irradiance += sum * (l.area * inv_n);
+        irradiance += radiance * (cos_x * cos_y / dist2 * l.area / probability);
     }
-    return albedo * (1.0f / 3.14159265358979f) * irradiance;
+    return albedo * (1.0f / 3.14159265358979f) * irradiance / static_cast<float>(total);
 }
 
 }  // namespace kdpm

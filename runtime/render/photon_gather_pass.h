@@ -4,6 +4,7 @@
 //   mode photons:        every photon of the global map (direct and indirect light alike);
 //   mode direct+photons: the global map without the direct hits (bounce >= 1) and without the
 //                        caustic photons, plus the caustic map (direct light comes from shadow rays).
+#include <cmath>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -21,6 +22,7 @@ struct PhotonMaps {
     PhotonMapView global;
     PhotonMapView caustic;
     bool present = false;
+    float typical_radius = 0.0f;  // median distance to the 32nd nearest photon (.kdp info); 0: unknown
     bool empty() const { return !present; }
 };
 
@@ -43,11 +45,23 @@ struct PhotonGatherPass {
     }
 };
 
+// Default search limit: this many times the typical radius for k photons. Where photons are
+// sparse (dark corners, or the indirect-only subset), an unlimited k-nearest search wanders
+// over much of the scene; beyond the limit the estimate uses the photons found in the disc.
+inline constexpr float kAutoRadiusFactor = 4.0f;
+
 // direct_light: the mode adds direct light by shadow rays, so direct photon hits are skipped.
-inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, std::uint32_t k) {
+// max_radius < 0: automatic (see kAutoRadiusFactor); 0: unlimited.
+inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, std::uint32_t k,
+                                         float max_radius = -1.0f) {
     PhotonGatherPass pass;
     pass.maps = maps;
     pass.global_params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    if (max_radius < 0.0f)
+        max_radius = maps.typical_radius > 0.0f
+                         ? kAutoRadiusFactor * maps.typical_radius * sqrtf(static_cast<float>(pass.global_params.k) / 32.0f)
+                         : 0.0f;
+    pass.global_params.max_radius = max_radius;
     pass.caustic_params = pass.global_params;
     if (direct_light) {
         pass.global_params.min_bounce = 1;

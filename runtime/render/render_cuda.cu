@@ -8,6 +8,7 @@
 #include "runtime/backend/cuda_parallel_for.cuh"
 #include "runtime/backend/device_buffer.h"
 #include "runtime/render/frame_backend.h"
+#include "runtime/render/light_distribution.h"
 
 namespace kdpm {
 
@@ -58,13 +59,17 @@ public:
         device_geometry_.materials = upload(owned_, h.materials, h.material_count);
         device_geometry_.lights = upload(owned_, h.lights, h.light_count);
         device_photons_ = upload_photon_maps(owned_, scene.photons);
+        const std::vector<float> cdf = light_power_cdf(h);
+        device_lights_ = LightDistributionView{upload(owned_, cdf.data(), cdf.size()),
+                                               static_cast<std::uint32_t>(cdf.size())};
         upload_ms_ = watch.lap_ms();
     }
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CudaDevice device;
-        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings.k);
-        run_frame(device, device_geometry_, gather, plan, linear, aovs, times);
+        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings.k,
+                                                          plan.settings.max_radius);
+        run_frame(device, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
     double upload_ms() const override { return upload_ms_; }
 
@@ -91,6 +96,7 @@ private:
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;
+    LightDistributionView device_lights_;
     double upload_ms_ = 0.0;
 };
 

@@ -25,7 +25,8 @@ struct RenderSettings {
     std::uint32_t spp = 1;
     RenderMode mode = RenderMode::photons;
     std::uint32_t k = 0;                  // photons per estimate; 0: the scene's default (else 100)
-    std::uint32_t light_samples = 16;     // shadow rays per light per diffuse point
+    float max_radius = -1.0f;             // photon search limit; < 0: automatic, 0: unlimited
+    std::uint32_t light_samples = 16;     // shadow rays per diffuse point (lights picked by power)
     std::uint32_t max_depth = 8;          // mirror/glass bounces followed
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;

@@ -30,6 +30,7 @@ LoadedScene LoadedScene::load(const std::filesystem::path& geometry,
         scene.views_.photons.global = scene.files_->photons->view(PhotonMapKind::global);
         scene.views_.photons.caustic = scene.files_->photons->view(PhotonMapKind::caustic);
         scene.views_.photons.present = true;
+        scene.views_.photons.typical_radius = scene.files_->photons->info(PhotonMapKind::global).query_radius;
     }
     scene.load_ms_ = watch.lap_ms();
     return scene;

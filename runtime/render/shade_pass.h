@@ -15,6 +15,7 @@ namespace kdpm {
 
 struct ShadePass {
     GeometryView geometry;
+    LightDistributionView lights;
     FrameBuffersView frame;
     std::uint32_t sample = 0;
     std::uint32_t light_samples = 16;
@@ -32,7 +33,7 @@ struct ShadePass {
             if (direct) {
                 // Offset along the geometric normal, cosine with the shading normal.
                 const glm::vec3 origin = d.position + epsilon * d.geometric_normal;
-                l += direct_light(geometry, origin, d.shading_normal, d.albedo, light_samples, 0.0f,
+                l += direct_light(geometry, lights, origin, d.shading_normal, d.albedo, light_samples,
                                   static_cast<std::uint32_t>(pixel), sample * kMaxDiffuseVertices + v);
             }
             if (photons) l += frame.gathered[slot];

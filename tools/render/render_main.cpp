@@ -40,7 +40,7 @@ int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
     int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, threads = 0;
-    double exposure = 0.0;
+    double exposure = 0.0, max_radius = -1.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
 
@@ -53,9 +53,11 @@ int run(int argc, char** argv) {
         .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
         .option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
         .option("k", &k, "N", "photons per radiance estimate, at most 256 (default: the scene card's)", 1, 256)
+        .option("max-radius", &max_radius, "R",
+                "photon search limit (default: automatic, 4x the photon map's typical k-radius; 0: none)", 0.0, 1e30)
         .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
-        .option("light-samples", &light_samples, "N", "shadow rays per light at each diffuse point (default 16)", 1,
+        .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
                 4096)
         .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
@@ -91,6 +93,7 @@ int run(int argc, char** argv) {
     settings.height = static_cast<std::uint32_t>(height);
     settings.spp = static_cast<std::uint32_t>(spp);
     settings.k = static_cast<std::uint32_t>(k);
+    settings.max_radius = static_cast<float>(max_radius);
     settings.light_samples = static_cast<std::uint32_t>(light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.post.exposure_stops = static_cast<float>(exposure);

@@ -5,6 +5,8 @@
 #include <exception>
 #include <utility>
 
+#include <tbb/task_group.h>
+
 namespace kdpm {
 
 namespace {
@@ -20,15 +22,25 @@ RenderWorker::~RenderWorker() {
         std::lock_guard lock(mutex_);
         stop_ = true;
         pending_.reset();
+        cancel_running_locked();
     }
     wake_.notify_all();
     thread_.join();
 }
 
+void RenderWorker::cancel_running_locked() {
+    if (running_group_ && !running_cancelled_) {
+        running_cancelled_ = true;
+        running_group_->cancel();
+    }
+}
+
 void RenderWorker::submit(FrameJob job) {
     {
         std::lock_guard lock(mutex_);
-        newest_generation_ = std::max(newest_generation_, job.generation);
+        // Previews are short and are still the newest picture while the camera moves, so they
+        // always finish; a refinement frame for an old view is abandoned at once.
+        if (!running_preview_) cancel_running_locked();
         pending_ = std::move(job);
     }
     wake_.notify_all();
@@ -57,6 +69,10 @@ bool RenderWorker::idle() const {
 void RenderWorker::loop() {
     for (;;) {
         FrameJob job;
+        // The frame runs inside its own task group: cancelling the group stops the CPU backend's
+        // parallel loops (nested oneTBB algorithms share the group's cancellation) part-way
+        // through a pass; the half-written frame is then thrown away.
+        tbb::task_group group;
         {
             std::unique_lock lock(mutex_);
             wake_.wait(lock, [&] { return stop_ || pending_.has_value(); });
@@ -64,30 +80,36 @@ void RenderWorker::loop() {
             job = std::move(*pending_);
             pending_.reset();
             busy_ = true;
+            running_group_ = &group;
+            running_cancelled_ = false;
+            running_preview_ = job.preview;
         }
-        const std::uint64_t generation = job.generation;
         RenderSettings settings = job.settings;
-        settings.progress = [this, generation](double) {
+        // Between sample passes (and on the CUDA backend, whose launches cannot be interrupted).
+        settings.progress = [this](double) {
             std::lock_guard lock(mutex_);
-            if (stop_ || newest_generation_ != generation) throw FrameCancelled{};
+            if (running_cancelled_) throw FrameCancelled{};
         };
         FinishedFrame frame;
+        group.run_and_wait([&] {
+            try {
+                frame.result = renderer_.render(settings);
+                StopWatch watch;
+                if (job.density_k > 0)
+                    frame.density = photon_density(density_map_, frame.result.aovs.position,
+                                                   frame.result.aovs.normal, job.density_k);
+                frame.density_ms = watch.lap_ms();
+            } catch (const FrameCancelled&) {
+            } catch (const std::exception& e) {
+                frame.error = e.what();
+            }
+        });
         bool cancelled = false;
-        try {
-            frame.result = renderer_.render(settings);
-            StopWatch watch;
-            if (job.density_k > 0)
-                frame.density = photon_density(density_map_, frame.result.aovs.position, frame.result.aovs.normal,
-                                               job.density_k);
-            frame.density_ms = watch.lap_ms();
-        } catch (const FrameCancelled&) {
-            cancelled = true;
-        } catch (const std::exception& e) {
-            frame.error = e.what();
-        }
         {
             std::lock_guard lock(mutex_);
             busy_ = false;
+            running_group_ = nullptr;
+            cancelled = running_cancelled_;
             if (!cancelled) {
                 frame.job = std::move(job);
                 finished_ = std::move(frame);

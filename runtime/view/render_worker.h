@@ -1,7 +1,9 @@
 #pragma once
 // Renders frames on a background thread so the window never waits for a slow frame. A newer
-// submission replaces a pending one and cancels the frame in flight at its next sample boundary
-// (the Renderer's progress callback), so stale frames cost at most one sample pass.
+// submission replaces a pending one; a refinement frame in flight is cancelled at once on the
+// CPU backend (its oneTBB loops stop) and otherwise at its next sample boundary (the Renderer's
+// progress callback). Previews in flight finish: while the camera keeps moving they are the
+// newest picture there is.
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -9,6 +11,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <tbb/task_group.h>
 
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/render/renderer.h"
@@ -47,6 +51,7 @@ public:
 
 private:
     void loop();
+    void cancel_running_locked();
 
     Renderer& renderer_;
     PhotonMapView density_map_;
@@ -54,8 +59,10 @@ private:
     std::condition_variable wake_, done_;
     std::optional<FrameJob> pending_;
     std::optional<FinishedFrame> finished_;
-    std::uint64_t newest_generation_ = 0;
     bool busy_ = false;
+    tbb::task_group* running_group_ = nullptr;
+    bool running_cancelled_ = false;
+    bool running_preview_ = false;
     bool stop_ = false;
     std::thread thread_;
 };

@@ -224,14 +224,18 @@ private:
         std::ostringstream t;
         t << "kdpm-view: " << std::filesystem::path(cfg_.geometry_path).filename().string() << " | "
           << backend_name(renderer_.backend());
+        char line[160];
         if (last_) {
             const auto& r = last_->result;
-            t << " | " << r.linear.width << "x" << r.linear.height << " " << last_->job.settings.spp << " spp";
-            char ms[32];
-            std::snprintf(ms, sizeof ms, "%.1f ms", r.times.total_ms() + last_->density_ms);
-            t << " | " << ms;
+            const StageTimes& s = r.times;
+            std::snprintf(line, sizeof line, " %dx%d %u spp | trace %.0f gather %.0f shade %.0f post %.0f ms",
+                          r.linear.width, r.linear.height, last_->job.settings.spp, s.ray_tracing_ms,
+                          s.photon_gather_ms + last_->density_ms, s.shading_ms, s.post_ms + s.transfer_ms);
+            t << line;
         }
-        t << " | k " << options_.k << " | " << render_mode_name(options_.mode) << " | " << view_name(options_.view);
+        t << " | k " << options_.k << " " << render_mode_name(options_.mode);
+        if (have_photons_) t << " | " << photons_.global.photon_count + photons_.caustic.photon_count << " photons";
+        t << " | " << view_name(options_.view);
         return t.str();
     }
 

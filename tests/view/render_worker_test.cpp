@@ -65,6 +65,23 @@ TEST_CASE("render worker cancels a stale frame when a newer one is submitted", "
     CHECK_FALSE(worker.take());
 }
 
+TEST_CASE("render worker lets a preview in flight finish", "[view][worker]") {
+    auto scene = floor_scene();
+    Renderer renderer(scene.views(), BackendKind::cpu);
+    RenderWorker worker(renderer, PhotonMapView{});
+    FrameJob preview = job(1, 128, 32);
+    preview.preview = true;
+    worker.submit(preview);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    worker.submit(job(2, 16, 1));
+    // The preview is the newest picture while the camera moves: it arrives, then the newer frame.
+    FinishedFrame first = worker.wait();
+    CHECK(first.job.generation == 1);
+    CHECK(first.result.linear.width == 128);
+    FinishedFrame second = worker.wait();
+    CHECK(second.job.generation == 2);
+}
+
 TEST_CASE("render worker reports a render error as text", "[view][worker]") {
     auto scene = floor_scene();
     Renderer renderer(scene.views(), BackendKind::cpu);

@@ -1,0 +1,29 @@
+// The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
+#include "runtime/render/cpu_device.h"
+#include "runtime/render/frame_backend.h"
+
+namespace kdpm {
+
+namespace {
+
+class CpuFrameBackend final : public FrameBackend {
+public:
+    explicit CpuFrameBackend(const SceneViews& scene) : scene_(scene) {}
+
+    void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
+        CpuDevice device;
+        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings.k);
+        run_frame(device, scene_.geometry, gather, plan, linear, aovs, times);
+    }
+
+private:
+    SceneViews scene_;
+};
+
+}  // namespace
+
+std::unique_ptr<FrameBackend> make_cpu_frame_backend(const SceneViews& scene) {
+    return std::make_unique<CpuFrameBackend>(scene);
+}
+
+}  // namespace kdpm

@@ -16,3 +16,7 @@ if(NANOFLANN_INCLUDE_DIR)
   target_compile_definitions(kdpm_bench_peers PUBLIC KDPM_HAVE_NANOFLANN=1)
 endif()
 message(STATUS "kdpm-bench peers: Embree ${embree_FOUND}, nanoflann ${NANOFLANN_INCLUDE_DIR}")
+
+kdpm_tool(kdpm-bench bench/bench_main.cpp
+          kdpm_bench_peers kdpm_render kdpm_geometry_builder kdpm_photon_shooter kdpm_builders_photons)
+target_sources(kdpm-bench PRIVATE bench/scene_bench.cpp bench/bench_report.cpp)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -28,22 +29,42 @@ namespace {
 enum EventType : std::uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
 constexpr std::uint32_t kLocalMask = (1u << 30) - 1;
 
+// Positions as order-preserving integers, so that an event sorts with one 64-bit compare.
+// -0 is folded into +0 first, so equal positions have equal bits.
+inline std::uint32_t order_bits(float f) {
+    f += 0.0f;
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+inline float from_order_bits(std::uint32_t o) {
+    const std::uint32_t u = (o & 0x80000000u) ? (o & 0x7fffffffu) : ~o;
+    float f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 struct Event {
-    float pos;
-    std::uint32_t key;  // type << 30 | index of the triangle in the node's list
-    EventType type() const { return static_cast<EventType>(key >> 30); }
-    std::uint32_t local() const { return key & kLocalMask; }
+    std::uint64_t bits;  // order_bits(pos) << 32 | type << 30 | index of the triangle in the node's list
+    static Event make(float pos, EventType type, std::uint32_t local) {
+        return Event{static_cast<std::uint64_t>(order_bits(pos)) << 32 | static_cast<std::uint64_t>(type) << 30 | local};
+    }
+    std::uint32_t pos_bits() const { return static_cast<std::uint32_t>(bits >> 32); }
+    float pos() const { return from_order_bits(pos_bits()); }
+    EventType type() const { return static_cast<EventType>((bits >> 30) & 3u); }
+    std::uint32_t local() const { return static_cast<std::uint32_t>(bits) & kLocalMask; }
+    Event with_local(std::uint32_t local) const { return Event{(bits & ~std::uint64_t{kLocalMask}) | local}; }
 };
 
-inline bool operator<(const Event& a, const Event& b) { return a.pos < b.pos || (a.pos == b.pos && a.key < b.key); }
+inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
 
 inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {
     for (int a = 0; a < 3; ++a) {
         if (b.lo[a] == b.hi[a]) {
-            ev[a].push_back({b.lo[a], kPlanar << 30 | local});
+            ev[a].push_back(Event::make(b.lo[a], kPlanar, local));
         } else {
-            ev[a].push_back({b.lo[a], kStart << 30 | local});
-            ev[a].push_back({b.hi[a], kEnd << 30 | local});
+            ev[a].push_back(Event::make(b.lo[a], kStart, local));
+            ev[a].push_back(Event::make(b.hi[a], kEnd, local));
         }
     }
 }
@@ -151,11 +172,12 @@ private:
             std::uint32_t nl = 0, nr = n;
             std::size_t i = 0;
             while (i < m) {
-                const float p = e[i].pos;
+                const std::uint32_t pb = e[i].pos_bits();
                 std::uint32_t ends = 0, planar = 0, starts = 0;
-                while (i < m && e[i].pos == p && e[i].type() == kEnd) ++ends, ++i;
-                while (i < m && e[i].pos == p && e[i].type() == kPlanar) ++planar, ++i;
-                while (i < m && e[i].pos == p && e[i].type() == kStart) ++starts, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kEnd) ++ends, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kPlanar) ++planar, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kStart) ++starts, ++i;
+                const float p = from_order_bits(pb);
                 nr -= planar + ends;
                 if (p > lo && p < hi) {
                     const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
@@ -188,11 +210,13 @@ private:
         const float p = s.pos;
         std::vector<std::uint8_t>& side = scratch.side;
         side.assign(n, kBoth);
+        const std::uint32_t pb = order_bits(p);
         for (const Event& e : in.ev[k]) {
             const EventType t = e.type();
-            if (t == kEnd && e.pos <= p) side[e.local()] = kLeft;
-            else if (t == kStart && e.pos >= p) side[e.local()] = kRight;
-            else if (t == kPlanar) side[e.local()] = (e.pos < p || (e.pos == p && s.planar_left)) ? kLeft : kRight;
+            const std::uint32_t eb = e.pos_bits();
+            if (t == kEnd && eb <= pb) side[e.local()] = kLeft;
+            else if (t == kStart && eb >= pb) side[e.local()] = kRight;
+            else if (t == kPlanar) side[e.local()] = (eb < pb || (eb == pb && s.planar_left)) ? kLeft : kRight;
         }
         left.cell = in.cell;
         right.cell = in.cell;
@@ -251,13 +275,12 @@ private:
                 const std::uint32_t i = e.local();
                 const std::uint8_t sd = side_of[i];
                 if (sd == kBoth) continue;
-                const std::uint32_t type_bits = e.key & ~kLocalMask;
                 if (sd == kLeft) {
-                    const Event moved{e.pos, type_bits | lm[i]};
+                    const Event moved = e.with_local(lm[i]);
                     while (il < nfl && fl[il] < moved) el.push_back(fl[il++]);
                     el.push_back(moved);
                 } else {
-                    const Event moved{e.pos, type_bits | rm[i]};
+                    const Event moved = e.with_local(rm[i]);
                     while (ir < nfr && fr[ir] < moved) er.push_back(fr[ir++]);
                     er.push_back(moved);
                 }

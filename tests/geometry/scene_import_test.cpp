@@ -149,3 +149,17 @@ TEST_CASE("a card adds parallelogram lights and defaults", "[geometry][import]")
     CHECK(s.lights[0].power == Approx(3.14159265f * 2.0f));
     CHECK(s.camera.up[2] == 1.0f);
 }
+
+TEST_CASE("glTF import applies node transforms and reads base colour and emission", "[geometry][import]") {
+    test::TempDir dir;
+    write_text(dir / "tri.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"scene\": 0, \"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"mesh\": 0, \"translation\": [0, 0, 2]}], \"meshes\": [{\"primitives\": [{\"attributes\": {\"POSITION\": 0}, \"indices\": 1, \"material\": 0}]}], \"materials\": [{\"pbrMetallicRoughness\": {\"baseColorFactor\": [0.2, 0.4, 0.6, 1]}, \"emissiveFactor\": [1, 0.5, 0.25]}], \"buffers\": [{\"byteLength\": 44, \"uri\": \"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=\"}], \"bufferViews\": [{\"buffer\": 0, \"byteOffset\": 0, \"byteLength\": 36}, {\"buffer\": 0, \"byteOffset\": 36, \"byteLength\": 6}], \"accessors\": [{\"bufferView\": 0, \"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\", \"min\": [0, 0, 0], \"max\": [1, 1, 0]}, {\"bufferView\": 1, \"componentType\": 5123, \"count\": 3, \"type\": \"SCALAR\"}]}");
+    const Scene s = import_mesh(dir / "tri.gltf");
+    REQUIRE(s.triangles.size() == 1);
+    CHECK(s.triangles[0].v0[2] == 2.0f);  // node translation (0, 0, 2)
+    CHECK(s.triangles[0].e1[0] == 1.0f);
+    const MaterialRecord& m = material_of(s, 0);
+    CHECK(m.diffuse[1] == Approx(0.4f));
+    CHECK(m.emission[1] == Approx(0.5f));
+    REQUIRE(s.lights.size() == 1);
+    CHECK(s.lights[0].radiance[2] == Approx(0.25f));
+}

@@ -14,7 +14,7 @@ namespace kdpm {
 
 struct PhotonTreeOptions {
     PhotonTreeBuilder builder = PhotonTreeBuilder::vvh;
-    std::uint32_t leaf_size = 8;  // most photons in a leaf (VVH may stop earlier by cost)
+    std::uint32_t leaf_size = 16;  // most photons in a leaf (VVH may stop earlier by cost)
     float query_radius = 0.0f;    // VVH expected query radius; <= 0: estimated from the photons
 };
 

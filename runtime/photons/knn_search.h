@@ -77,6 +77,10 @@ KDPM_HD KDPM_INLINE void sift_up(float* d2, std::uint32_t* index, std::uint32_t 
 // Finds up to k photons (k clamped to 1..kMaxGatherK) with metric distance^2 < max_radius^2
 // (no limit when max_radius <= 0). Returns how many; they are in heap.d2/heap.index[0..count),
 // a max-heap (heap.d2[0] the largest). Writes nothing else; no allocation.
+//
+// A far child is pushed with the squared distance from q to its cell, from the cell's per-axis
+// offsets kept incrementally (Arya & Mount: only the split axis changes from the parent's).
+// That bound prunes more than the split-plane distance alone.
 template <class Metric, class Accept>
 KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uint32_t k, float max_radius,
                                  const Metric& metric, const Accept& accept, KnnHeap& heap) {
@@ -87,10 +91,15 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
     float* hd2 = heap.d2;
     std::uint32_t* hidx = heap.index;
 
-    std::uint32_t stack_node[kMaxPhotonTreeDepth + 1];
-    float stack_d2[kMaxPhotonTreeDepth + 1];
+    struct Entry {
+        std::uint32_t node;
+        float d2;        // squared distance from q to the cell
+        float off[3];    // per-axis offset from q to the cell (0 inside the slab)
+    };
+    Entry stack[kMaxPhotonTreeDepth + 1];
     std::uint32_t top = 0;
     std::uint32_t node = 0;
+    float off[3] = {0.0f, 0.0f, 0.0f};
     const float qc[3] = {q.x, q.y, q.z};
     for (;;) {
         KdNode n = map.nodes[node];
@@ -98,13 +107,20 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             const int axis = n.axis();
             const float d = qc[axis] - n.split();
             const std::uint32_t above = n.above_child();
-            std::uint32_t near_child = d < 0.0f ? node + 1 : above;
-            std::uint32_t far_child = d < 0.0f ? above : node + 1;
-            const float plane_d2 = d * d;
-            if (plane_d2 < max_d2 && top <= kMaxPhotonTreeDepth) {
-                stack_node[top] = far_child;
-                stack_d2[top] = plane_d2;
-                ++top;
+            const std::uint32_t near_child = d < 0.0f ? node + 1 : above;
+            const std::uint32_t far_child = d < 0.0f ? above : node + 1;
+            // Summed afresh in the photon distance's order (no cancellation), so rounding never
+            // makes the bound exceed the distance of a photon in that cell.
+            float far_off[3] = {off[0], off[1], off[2]};
+            far_off[axis] = d;
+            const float far_d2 = far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+            if (far_d2 < max_d2 && top <= kMaxPhotonTreeDepth) {
+                Entry& e = stack[top++];
+                e.node = far_child;
+                e.d2 = far_d2;
+                e.off[0] = far_off[0];
+                e.off[1] = far_off[1];
+                e.off[2] = far_off[2];
             }
             node = near_child;
             n = map.nodes[node];
@@ -123,13 +139,17 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                 }
             }
         }
-        // Next subtree whose split plane is still closer than the current radius.
+        // Next subtree whose cell is still closer than the current radius.
         for (;;) {
             if (top == 0) return found;
             --top;
-            if (stack_d2[top] < max_d2) break;
+            if (stack[top].d2 < max_d2) break;
         }
-        node = stack_node[top];
+        const Entry& e = stack[top];
+        node = e.node;
+        off[0] = e.off[0];
+        off[1] = e.off[1];
+        off[2] = e.off[2];
     }
 }
 

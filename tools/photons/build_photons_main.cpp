@@ -20,13 +20,13 @@ using namespace kdpm;
 int main(int argc, char** argv) {
     std::string input, output;
     bool balanced = false, quiet = false;
-    int leaf_size = 8, threads = 0;
+    int leaf_size = 16, threads = 0;
     double radius = 0.0;
     cli::Args args("kdpm-build-photons", "Builds the photon kd-tree file (.kdp) from photon hits (.kdph).");
     args.positional("PHOTONS.kdph", &input, "photon hits from kdpm-shoot-photons")
         .option("output", &output, "FILE.kdp", "output file (also -o FILE)")
         .flag("balanced", &balanced, "classic balanced median-split tree instead of VVH")
-        .option("leaf-size", &leaf_size, "N", "most photons per leaf (default 8)", 1, 4096)
+        .option("leaf-size", &leaf_size, "N", "most photons per leaf (default 16)", 1, 4096)
         .option("radius", &radius, "R", "VVH expected query radius (default: estimated for k = 32)", 0.0, 1e30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");

@@ -64,23 +64,28 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightDistributio
     times.transfer_ms += watch.lap_ms();
 
     const std::uint32_t spp = plan.settings.spp < 1 ? 1 : plan.settings.spp;
+    auto report = [&](std::uint32_t sample, int passes_done) {
+        if (plan.settings.progress) plan.settings.progress((sample * 3.0 + passes_done) / (3.0 * spp));
+    };
     for (std::uint32_t s = 0; s < spp; ++s) {
         TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
         dev.launch(pixels, trace);
         times.ray_tracing_ms += watch.lap_ms();
+        report(s, 1);
 
         if (plan.gather_photons) {
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
             dev.launch(slots, gather);
             times.photon_gather_ms += watch.lap_ms();
+            report(s, 2);
         }
 
         ShadePass shade{geometry, lights, fb, s, plan.settings.light_samples, plan.direct_light,
                         plan.gather_photons, plan.epsilon};
         dev.launch(pixels, shade);
         times.shading_ms += watch.lap_ms();
-        if (plan.settings.progress) plan.settings.progress(static_cast<double>(s + 1) / spp);
+        report(s, 3);
     }
 
     std::vector<glm::vec3> sums;

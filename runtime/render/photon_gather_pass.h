@@ -14,6 +14,7 @@
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/render/frame_buffers.h"
+#include "runtime/render/tile_order.h"
 
 namespace kdpm {
 
@@ -33,9 +34,10 @@ struct PhotonGatherPass {
     RadianceEstimateParams caustic_params;
     bool use_caustic_map = false;
 
-    KDPM_HD void operator()(std::uint64_t slot) const {
-        const std::uint64_t pixel = slot / kMaxDiffuseVertices;
-        if (slot % kMaxDiffuseVertices >= frame.vertex_count[pixel]) return;
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item / kMaxDiffuseVertices, frame.width, frame.height);
+        const std::uint64_t slot = pixel * kMaxDiffuseVertices + item % kMaxDiffuseVertices;
+        if (item % kMaxDiffuseVertices >= frame.vertex_count[pixel]) return;
         const DiffuseVertex& v = frame.vertices[slot];
         KnnHeap heap;
         glm::vec3 l = estimate_radiance(maps.global, v.position, v.shading_normal, v.albedo, global_params, heap).radiance;

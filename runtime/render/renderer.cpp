@@ -33,10 +33,15 @@ float scene_epsilon(const GeometryInfo& info) {
 }
 
 Renderer::Renderer(const SceneViews& scene, BackendKind backend) : scene_(scene), backend_(backend) {
-    if (backend == BackendKind::cuda)
+    if (backend == BackendKind::cuda) {
+#if defined(KDPM_HAVE_CUDA)
         impl_ = make_cuda_frame_backend(scene_);
-    else
+#else
+        throw std::runtime_error("this build of kdpm has no CUDA backend");
+#endif
+    } else {
         impl_ = make_cpu_frame_backend(scene_);
+    }
 }
 
 Renderer::~Renderer() = default;

@@ -10,6 +10,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/light_sampling.h"
+#include "runtime/render/tile_order.h"
 
 namespace kdpm {
 
@@ -23,7 +24,8 @@ struct ShadePass {
     bool photons = true;   // add the gathered photon radiance
     float epsilon = 1e-4f;
 
-    KDPM_HD void operator()(std::uint64_t pixel) const {
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
         glm::vec3 radiance = frame.emitted[pixel];
         const std::uint32_t count = frame.vertex_count[pixel];
         for (std::uint32_t v = 0; v < count; ++v) {

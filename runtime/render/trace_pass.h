@@ -16,6 +16,7 @@
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/specular.h"
+#include "runtime/render/tile_order.h"
 
 namespace kdpm {
 
@@ -64,7 +65,8 @@ struct TracePass {
     };
     static constexpr int kStack = 8;
 
-    KDPM_HD void operator()(std::uint64_t pixel) const {
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
         const std::uint32_t x = static_cast<std::uint32_t>(pixel % frame.width);
         const std::uint32_t y = static_cast<std::uint32_t>(pixel / frame.width);
         const CameraRay cam = camera.ray(x, y, sample);

@@ -46,3 +46,30 @@ TEST_CASE("triangle and depth AOVs equal a brute-force cast over all triangles",
     CHECK(hits > 200);  // the camera sees the soup
     CHECK(mismatches == 0);
 }
+
+TEST_CASE("one Renderer follows a changing camera from frame to frame", "[render][aov]") {
+    test::BuiltScene scene(600, 11, 24, 16);
+    Renderer renderer(scene.views, BackendKind::cpu);
+    const GeometryView& g = scene.views.geometry;
+    for (int frame = 0; frame < 3; ++frame) {
+        CameraRecord camera = scene.views.camera;
+        camera.eye[0] += 0.3f * static_cast<float>(frame);  // the viewer moves sideways
+        camera.eye[1] -= 0.2f * static_cast<float>(frame);
+        RenderSettings settings;
+        settings.mode = RenderMode::direct;
+        settings.light_samples = 1;
+        settings.camera = camera;
+        settings.aovs.triangle = true;
+        RenderResult r = renderer.render(settings);
+        PinholeCamera cam = PinholeCamera::from_record(camera, 24, 16, 1);
+        int mismatches = 0;
+        for (std::uint32_t i = 0; i < 24u * 16u; ++i) {
+            CameraRay c = cam.ray(i % 24, i / 24, 0);
+            Hit h = closest_hit_brute_force(g, Ray{c.origin, 0.0f, c.direction, 1e30f});
+            const std::int32_t expected = h.found() ? static_cast<std::int32_t>(g.triangles[h.triangle].source_index) : -1;
+            mismatches += r.aovs.triangle[i] != expected;
+        }
+        INFO("frame " << frame);
+        CHECK(mismatches == 0);
+    }
+}

@@ -137,13 +137,11 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
     for (std::uint32_t ti = 0; ti < t.tris.size(); ++ti) {
         const TriangleRecord& tri = t.tris[ti];
         if (!triangle_is_usable(tri)) continue;
-        float v[3][3];
+        double v[3][3];
         triangle_vertices(tri, v);
-        float lo[3], hi[3];
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
-            hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
-        }
+        const AxisBox bounds = triangle_bounds(tri);
+        const float* lo = bounds.lo;
+        const float* hi = bounds.hi;
         stack.clear();
         stack.push_back({0, 0, root});
         while (!stack.empty()) {
@@ -160,17 +158,20 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
                 if (lo[axis] <= split) stack.push_back({e.node + 1, e.depth + 1, lo_cell});
                 continue;
             }
-            // The cell shrunk by eps on each axis: a triangle only touching a face, or lying
-            // within eps of it, need not be listed. So a cell thinner than 2 eps requires
-            // nothing; a flat axis (a flat scene) is not shrunk.
+            // The cell shrunk by eps on each axis (a thin cell by a quarter of its width): a
+            // triangle only touching a face, or lying within that distance of it, need not be
+            // listed. A flat axis (a flat scene) is not shrunk; a cell too thin to shrink in
+            // float (a few ulps) requires nothing.
             AxisBox inner = e.cell;
             bool too_thin = false;
             for (int a = 0; a < 3; ++a) {
                 const float width = inner.hi[a] - inner.lo[a];
                 if (width == 0.0f) continue;
-                if (width <= 2 * eps) too_thin = true;
-                inner.lo[a] += eps;
-                inner.hi[a] -= eps;
+                const float shrink = std::min(eps, 0.25f * width);
+                const float lo_in = inner.lo[a] + shrink, hi_in = inner.hi[a] - shrink;
+                if (!(lo_in > inner.lo[a] && hi_in < inner.hi[a] && lo_in <= hi_in)) too_thin = true;
+                inner.lo[a] = lo_in;
+                inner.hi[a] = hi_in;
             }
             AxisBox clipped;
             if (too_thin || !clip_triangle_to_box(v, inner, clipped)) continue;

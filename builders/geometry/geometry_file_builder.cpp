@@ -36,7 +36,18 @@ GeometryBuild build_geometry_file(const Scene& input, const KdBuildParams& param
     for (const TriangleRecord& t : scene->triangles)
         if (t.material >= scene->materials.size()) throw FormatError("triangle material index out of range");
 
-    KdTree tree = build_sah_kd_tree(scene->triangles, params, progress);
+    const KdTree tree = build_sah_kd_tree(scene->triangles, params, progress);
+    return GeometryBuild{assemble_geometry_file(*scene, tree, params), tree.stats};
+}
+
+ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, const KdBuildParams& params) {
+    const Scene* scene = &input;
+    Scene framed;
+    if (!input.has_camera) {
+        framed = input;
+        frame_camera(framed);
+        scene = &framed;
+    }
 
     GeometryInfo info{};
     for (int a = 0; a < 3; ++a) info.bounds_min[a] = tree.bounds.lo[a], info.bounds_max[a] = tree.bounds.hi[a];
@@ -71,8 +82,7 @@ GeometryBuild build_geometry_file(const Scene& input, const KdBuildParams& param
     meta.statistics["materials"] = static_cast<double>(scene->materials.size());
     meta.statistics["lights"] = static_cast<double>(scene->lights.size());
 
-    GeometryBuild build{ContainerWriter(FileKind::geometry), s};
-    ContainerWriter& w = build.writer;
+    ContainerWriter w(FileKind::geometry);
     w.set_metadata(meta);
     w.add_record(section::geo_info, info);
     w.add(section::geo_nodes, ElementType::record, tree.nodes);
@@ -82,7 +92,7 @@ GeometryBuild build_geometry_file(const Scene& input, const KdBuildParams& param
     w.add(section::geo_materials, ElementType::record, scene->materials);
     w.add(section::geo_lights, ElementType::record, scene->lights);
     w.add_record(section::geo_camera, scene->camera);
-    return build;
+    return w;
 }
 
 KdTreeStats write_geometry_file(const Scene& scene, const KdBuildParams& params, const std::filesystem::path& path) {

@@ -21,6 +21,10 @@ struct GeometryBuild {
 GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& params,
                                   const std::function<void(double)>& progress = {});
 
+// The sections of a .kdg file for `scene` with an already built `tree` (tests use it to write
+// deliberately broken trees).
+ContainerWriter assemble_geometry_file(const Scene& scene, const KdTree& tree, const KdBuildParams& params);
+
 // The same, written atomically to `path`.
 KdTreeStats write_geometry_file(const Scene& scene, const KdBuildParams& params, const std::filesystem::path& path);
 

@@ -20,10 +20,12 @@ struct SplitCost {
 // np in the plane and nr above; planar triangles go to the cheaper side (below on a tie).
 inline SplitCost sah_split_cost(const KdBuildParams& p, const AxisBox& cell, float cell_area, int axis, float pos,
                                 std::uint32_t nl, std::uint32_t np, std::uint32_t nr) {
-    AxisBox left = cell, right = cell;
-    left.hi[axis] = pos;
-    right.lo[axis] = pos;
-    const float pl = box_area(left) / cell_area, pr = box_area(right) / cell_area;
+    const int a1 = axis == 0 ? 1 : 0, a2 = axis == 2 ? 1 : 2;
+    const float d1 = cell.hi[a1] - cell.lo[a1], d2 = cell.hi[a2] - cell.lo[a2];
+    const float cap = d1 * d2, ring = d1 + d2;
+    const float inv = 1.0f / cell_area;
+    const float pl = 2.0f * (cap + ring * (pos - cell.lo[axis])) * inv;
+    const float pr = 2.0f * (cap + ring * (cell.hi[axis] - pos)) * inv;
     auto cost = [&](std::uint32_t l, std::uint32_t r) {
         const float c = p.traversal_cost + p.intersection_cost * (pl * static_cast<float>(l) + pr * static_cast<float>(r));
         return (l == 0 || r == 0) ? c * (1.0f - p.empty_bonus) : c;

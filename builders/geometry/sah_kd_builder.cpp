@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -28,22 +29,42 @@ namespace {
 enum EventType : std::uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
 constexpr std::uint32_t kLocalMask = (1u << 30) - 1;
 
+// Positions as order-preserving integers, so that an event sorts with one 64-bit compare.
+// -0 is folded into +0 first, so equal positions have equal bits.
+inline std::uint32_t order_bits(float f) {
+    f += 0.0f;
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+inline float from_order_bits(std::uint32_t o) {
+    const std::uint32_t u = (o & 0x80000000u) ? (o & 0x7fffffffu) : ~o;
+    float f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 struct Event {
-    float pos;
-    std::uint32_t key;  // type << 30 | index of the triangle in the node's list
-    EventType type() const { return static_cast<EventType>(key >> 30); }
-    std::uint32_t local() const { return key & kLocalMask; }
+    std::uint64_t bits;  // order_bits(pos) << 32 | type << 30 | index of the triangle in the node's list
+    static Event make(float pos, EventType type, std::uint32_t local) {
+        return Event{static_cast<std::uint64_t>(order_bits(pos)) << 32 | static_cast<std::uint64_t>(type) << 30 | local};
+    }
+    std::uint32_t pos_bits() const { return static_cast<std::uint32_t>(bits >> 32); }
+    float pos() const { return from_order_bits(pos_bits()); }
+    EventType type() const { return static_cast<EventType>((bits >> 30) & 3u); }
+    std::uint32_t local() const { return static_cast<std::uint32_t>(bits) & kLocalMask; }
+    Event with_local(std::uint32_t local) const { return Event{(bits & ~std::uint64_t{kLocalMask}) | local}; }
 };
 
-inline bool operator<(const Event& a, const Event& b) { return a.pos < b.pos || (a.pos == b.pos && a.key < b.key); }
+inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
 
 inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {
     for (int a = 0; a < 3; ++a) {
         if (b.lo[a] == b.hi[a]) {
-            ev[a].push_back({b.lo[a], kPlanar << 30 | local});
+            ev[a].push_back(Event::make(b.lo[a], kPlanar, local));
         } else {
-            ev[a].push_back({b.lo[a], kStart << 30 | local});
-            ev[a].push_back({b.hi[a], kEnd << 30 | local});
+            ev[a].push_back(Event::make(b.lo[a], kStart, local));
+            ev[a].push_back(Event::make(b.hi[a], kEnd, local));
         }
     }
 }
@@ -99,11 +120,9 @@ public:
         if (!root.tris.empty()) {
             for (int a = 0; a < 3; ++a) bounds.lo[a] = INFINITY, bounds.hi[a] = -INFINITY;
             for (std::uint32_t g : root.tris) {
-                float v[3][3];
-                triangle_vertices(tris_[g], v);
-                for (int k = 0; k < 3; ++k)
-                    for (int a = 0; a < 3; ++a)
-                        bounds.lo[a] = std::min(bounds.lo[a], v[k][a]), bounds.hi[a] = std::max(bounds.hi[a], v[k][a]);
+                const AxisBox b = triangle_bounds(tris_[g]);
+                for (int a = 0; a < 3; ++a)
+                    bounds.lo[a] = std::min(bounds.lo[a], b.lo[a]), bounds.hi[a] = std::max(bounds.hi[a], b.hi[a]);
             }
         }
         root.cell = bounds;
@@ -112,7 +131,7 @@ public:
         std::vector<std::uint32_t> kept;
         kept.reserve(root.tris.size());
         for (std::uint32_t g : root.tris) {
-            float v[3][3];
+            double v[3][3];
             triangle_vertices(tris_[g], v);
             AxisBox b;
             if (!clip_triangle_to_box(v, bounds, b)) continue;
@@ -153,11 +172,12 @@ private:
             std::uint32_t nl = 0, nr = n;
             std::size_t i = 0;
             while (i < m) {
-                const float p = e[i].pos;
+                const std::uint32_t pb = e[i].pos_bits();
                 std::uint32_t ends = 0, planar = 0, starts = 0;
-                while (i < m && e[i].pos == p && e[i].type() == kEnd) ++ends, ++i;
-                while (i < m && e[i].pos == p && e[i].type() == kPlanar) ++planar, ++i;
-                while (i < m && e[i].pos == p && e[i].type() == kStart) ++starts, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kEnd) ++ends, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kPlanar) ++planar, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kStart) ++starts, ++i;
+                const float p = from_order_bits(pb);
                 nr -= planar + ends;
                 if (p > lo && p < hi) {
                     const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
@@ -172,29 +192,46 @@ private:
         return best;
     }
 
+    // Per-thread scratch of split_node, reused to keep small nodes free of allocations.
+    struct Scratch {
+        std::vector<std::uint8_t> side;
+        std::vector<std::uint32_t> lmap, rmap;
+        std::vector<Event> fresh_l[3], fresh_r[3];
+    };
+
     // Distributes the node's triangles and events to its children. Triangles on one side keep
     // their (already sorted) events; straddling triangles are clipped to each child cell and
-    // their fresh events are sorted and merged in.
+    // their fresh events are sorted and merged in, in the same pass.
     void split_node(NodeInput& in, const Split& s, NodeInput& left, NodeInput& right) const {
         enum : std::uint8_t { kBoth = 0, kLeft = 1, kRight = 2 };
+        thread_local Scratch scratch;
         const std::size_t n = in.tris.size();
         const int k = s.axis;
         const float p = s.pos;
-        std::vector<std::uint8_t> side(n, kBoth);
+        std::vector<std::uint8_t>& side = scratch.side;
+        side.assign(n, kBoth);
+        const std::uint32_t pb = order_bits(p);
         for (const Event& e : in.ev[k]) {
             const EventType t = e.type();
-            if (t == kEnd && e.pos <= p) side[e.local()] = kLeft;
-            else if (t == kStart && e.pos >= p) side[e.local()] = kRight;
-            else if (t == kPlanar) side[e.local()] = (e.pos < p || (e.pos == p && s.planar_left)) ? kLeft : kRight;
+            const std::uint32_t eb = e.pos_bits();
+            if (t == kEnd && eb <= pb) side[e.local()] = kLeft;
+            else if (t == kStart && eb >= pb) side[e.local()] = kRight;
+            else if (t == kPlanar) side[e.local()] = (eb < pb || (eb == pb && s.planar_left)) ? kLeft : kRight;
         }
         left.cell = in.cell;
         right.cell = in.cell;
         left.cell.hi[k] = p;
         right.cell.lo[k] = p;
 
-        constexpr std::uint32_t kNone = 0xffffffffu;
-        std::vector<std::uint32_t> lmap(n, kNone), rmap(n, kNone);
-        std::vector<Event> fresh_l[3], fresh_r[3];
+        std::vector<std::uint32_t>& lmap = scratch.lmap;
+        std::vector<std::uint32_t>& rmap = scratch.rmap;
+        lmap.resize(n);
+        rmap.resize(n);
+        for (int a = 0; a < 3; ++a) scratch.fresh_l[a].clear(), scratch.fresh_r[a].clear();
+        std::size_t n_left = 0, n_right = 0;
+        for (std::size_t i = 0; i < n; ++i) n_left += side[i] != kRight, n_right += side[i] != kLeft;
+        left.tris.reserve(n_left);
+        right.tris.reserve(n_right);
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t g = in.tris[i];
             if (side[i] == kLeft) {
@@ -204,43 +241,53 @@ private:
                 rmap[i] = static_cast<std::uint32_t>(right.tris.size());
                 right.tris.push_back(g);
             } else {
-                float v[3][3];
+                double v[3][3];
                 triangle_vertices(tris_[g], v);
                 AxisBox b;
                 if (clip_triangle_to_box(v, left.cell, b)) {
                     lmap[i] = static_cast<std::uint32_t>(left.tris.size());
                     left.tris.push_back(g);
-                    add_events(b, lmap[i], fresh_l);
+                    add_events(b, lmap[i], scratch.fresh_l);
                 }
                 if (clip_triangle_to_box(v, right.cell, b)) {
                     rmap[i] = static_cast<std::uint32_t>(right.tris.size());
                     right.tris.push_back(g);
-                    add_events(b, rmap[i], fresh_r);
+                    add_events(b, rmap[i], scratch.fresh_r);
                 }
             }
         }
         for (int a = 0; a < 3; ++a) {
+            std::vector<Event>& fl = scratch.fresh_l[a];
+            std::vector<Event>& fr = scratch.fresh_r[a];
+            std::sort(fl.begin(), fl.end());
+            std::sort(fr.begin(), fr.end());
             std::vector<Event>& el = left.ev[a];
             std::vector<Event>& er = right.ev[a];
-            el.reserve(in.ev[a].size() + fresh_l[a].size());
-            er.reserve(in.ev[a].size() + fresh_r[a].size());
+            // Each one-sided triangle has one or two events per axis: reserve for two.
+            el.reserve(2 * n_left);
+            er.reserve(2 * n_right);
+            std::size_t il = 0, ir = 0;
+            const std::uint8_t* side_of = side.data();
+            const std::uint32_t* lm = lmap.data();
+            const std::uint32_t* rm = rmap.data();
+            const std::size_t nfl = fl.size(), nfr = fr.size();
             for (const Event& e : in.ev[a]) {
                 const std::uint32_t i = e.local();
-                const std::uint32_t type_bits = e.key & ~kLocalMask;
-                if (side[i] == kLeft) el.push_back({e.pos, type_bits | lmap[i]});
-                else if (side[i] == kRight) er.push_back({e.pos, type_bits | rmap[i]});
+                const std::uint8_t sd = side_of[i];
+                if (sd == kBoth) continue;
+                if (sd == kLeft) {
+                    const Event moved = e.with_local(lm[i]);
+                    while (il < nfl && fl[il] < moved) el.push_back(fl[il++]);
+                    el.push_back(moved);
+                } else {
+                    const Event moved = e.with_local(rm[i]);
+                    while (ir < nfr && fr[ir] < moved) er.push_back(fr[ir++]);
+                    er.push_back(moved);
+                }
             }
-            merge_fresh(el, fresh_l[a]);
-            merge_fresh(er, fresh_r[a]);
+            el.insert(el.end(), fl.begin() + static_cast<std::ptrdiff_t>(il), fl.end());
+            er.insert(er.end(), fr.begin() + static_cast<std::ptrdiff_t>(ir), fr.end());
         }
-    }
-
-    static void merge_fresh(std::vector<Event>& sorted, std::vector<Event>& fresh) {
-        if (fresh.empty()) return;
-        std::sort(fresh.begin(), fresh.end());
-        const std::size_t mid = sorted.size();
-        sorted.insert(sorted.end(), fresh.begin(), fresh.end());
-        std::inplace_merge(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(mid), sorted.end());
     }
 
     std::unique_ptr<Piece> build_piece(NodeInput&& in, std::uint32_t depth) {

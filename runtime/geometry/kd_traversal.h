@@ -43,7 +43,8 @@ KDPM_HD KDPM_INLINE bool clip_to_bounds(const GeometryInfo& info, const glm::vec
 }
 
 // Walks the tree; for each leaf calls visit(first, count, t_leaf_max), which returns true to
-// stop the walk. Shared by the closest-hit and any-hit queries.
+// stop the walk; visit.limit() is the farthest t still of interest. Shared by the closest-hit
+// and any-hit queries.
 template <class LeafVisitor>
 KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor& visit) {
     if (g.node_count == 0) return;
@@ -80,6 +81,8 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
         if (visit(n.first(), n.count(), tmax)) return;
         if (sp == 0) return;
         const StackEntry e = stack[--sp];
+        // Entries come off nearest first: once one starts beyond the best hit, all do.
+        if (e.tmin > visit.limit()) return;
         node = e.node;
         tmin = e.tmin;
         tmax = e.tmax;
@@ -90,6 +93,7 @@ struct ClosestVisitor {
     const GeometryView& g;
     const Ray& ray;
     Hit hit;
+    KDPM_HD float limit() const { return hit.t; }
     KDPM_HD bool operator()(std::uint32_t first, std::uint32_t count, float leaf_tmax) {
         for (std::uint32_t i = 0; i < count; ++i) {
             const std::uint32_t tri = g.leaf_indices[first + i];
@@ -106,6 +110,7 @@ struct AnyVisitor {
     const GeometryView& g;
     const Ray& ray;
     bool occluded;
+    KDPM_HD float limit() const { return ray.tmax; }
     KDPM_HD bool operator()(std::uint32_t first, std::uint32_t count, float) {
         for (std::uint32_t i = 0; i < count; ++i) {
             float t, u, v;

@@ -1,51 +1,44 @@
 // Closest hits through the kd-tree equal a brute-force loop over all triangles.
 #include <catch2/catch.hpp>
 
-#include <cmath>
-
-#include "builders/geometry/geometry_file_builder.h"
-#include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "builders/geometry/scene_card.h"
+#include "runtime/geometry/surface_normal.h"
+#include "tests/geometry/geometry_check.h"
 #include "tests/geometry/random_scenes.h"
+#include "tests/support/run_command.h"
 
 using namespace kdpm;
 
-namespace {
-
-// Counts disagreements; a different triangle at the same distance (a tie) is not one.
-int compare_with_brute_force(const GeometryView& g, const std::vector<Ray>& rays) {
-    int bad = 0;
-    for (const Ray& r : rays) {
-        const Hit a = closest_hit(g, r), b = closest_hit_brute_force(g, r);
-        if (a.found() != b.found()) {
-            ++bad;
-            continue;
-        }
-        if (!a.found()) continue;
-        if (std::fabs(a.t - b.t) > 1e-5f * std::fabs(b.t)) ++bad;
-        if (occluded(g, Ray{r.origin, r.tmin, r.direction, b.t * 1.0001f}) != true) ++bad;
-        if (occluded(g, Ray{r.origin, r.tmin, r.direction, b.t * 0.9999f}) &&
-            closest_hit_brute_force(g, Ray{r.origin, r.tmin, r.direction, b.t * 0.9999f}).found() == false)
-            ++bad;
-    }
-    return bad;
-}
-
-}  // namespace
-
 TEST_CASE("closest hits through the tree match brute force on random soups", "[geometry][traversal]") {
-    for (std::uint32_t seed : {1u, 2u, 3u}) {
-        const std::uint32_t n = seed == 1 ? 50 : (seed == 2 ? 2000 : 8000);
-        GeometryBuild b = build_geometry_file(scene_from_triangles(test::random_soup(n, seed)), KdBuildParams{});
-        const auto bytes = b.writer.bytes();
-        GeometryFile file = GeometryFile::from_bytes(bytes, "soup.kdg", true);
-        CHECK(compare_with_brute_force(file.view(), test::random_rays(40000, seed + 100)) == 0);
-    }
+    test::check_triangles(test::random_soup(60, 1, 0.3f), test::random_rays(30000, 101));
+    test::check_triangles(test::random_soup(1500, 2), test::random_rays(50000, 102));
+    test::check_triangles(test::random_soup(5000, 3, 0.02f), test::random_rays(20000, 103));
 }
 
-TEST_CASE("an empty scene misses every ray", "[geometry][traversal]") {
-    GeometryBuild b = build_geometry_file(scene_from_triangles({}), KdBuildParams{});
-    const auto bytes = b.writer.bytes();
-    GeometryFile file = GeometryFile::from_bytes(bytes, "empty.kdg", true);
-    for (const Ray& r : test::random_rays(100, 5)) CHECK_FALSE(closest_hit(file.view(), r).found());
+TEST_CASE("closest hits match brute force on the shipped Cornell box", "[geometry][traversal]") {
+    const Scene scene = load_scene_input(test::source_path("scenes/cornell-box/cornell-box.json"));
+    const auto bytes = test::build_bytes(scene);
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "cornell-box.kdg", true);
+    // Rays from inside the room and from the camera side, in random directions.
+    auto rays = test::random_rays(60000, 7, -0.99f, 1.99f);
+    auto outside = test::random_rays(40000, 8, -3.0f, 4.0f);
+    rays.insert(rays.end(), outside.begin(), outside.end());
+    CHECK(test::count_mismatches(file.view(), rays) == 0);
+}
+
+TEST_CASE("rays from the camera hit the back wall with its normal facing the camera", "[geometry][traversal]") {
+    const Scene scene = load_scene_input(test::source_path("scenes/cornell-box/cornell-box.json"));
+    const auto bytes = test::build_bytes(scene);
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "cornell-box.kdg");
+    // Straight through the gap between the boxes at mid height: the back wall at z = -1.
+    const Ray r{glm::vec3(0, 1.5f, 3.9f), 0.0f, glm::vec3(0, 0, -1), 1e30f};
+    const Hit h = closest_hit(file.view(), r);
+    REQUIRE(h.found());
+    CHECK(h.t == Approx(4.9f));
+    const glm::vec3 n = shading_normal(file.view(), h.triangle, h.u, h.v);
+    CHECK(n.z == Approx(1.0f));
+    const glm::vec3 p = surface_point(file.view().triangles[h.triangle], h.u, h.v);
+    CHECK(p.z == Approx(-1.0f));
+    CHECK_FALSE(occluded(file.view(), Ray{r.origin, 0.0f, r.direction, 4.8f}));
+    CHECK(occluded(file.view(), Ray{r.origin, 0.0f, r.direction, 5.0f}));
 }

@@ -81,3 +81,28 @@ TEST_CASE("kNN on an empty map and on a single photon", "[photons][knn]") {
     REQUIRE(knn_search(test::view_of(one), glm::vec3(2.0f), 8, 0.0f, heap) == 1);
     CHECK(heap.index[0] == 0);
 }
+
+TEST_CASE("kNN with the disc metric and a filter equals brute force under the same metric", "[photons][knn]") {
+    auto set = test::synthetic_photons(6000, 17);
+    auto tree = build_photon_tree(set.hits, PhotonTreeOptions{});
+    auto view = test::view_of(tree);
+    std::mt19937 rng(19);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    static KnnHeap heap;
+    for (int qi = 0; qi < 60; ++qi) {
+        glm::vec3 q(u(rng), u(rng), u(rng));
+        glm::vec3 n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+        DiscMetric metric{n, 8.0f};
+        auto odd = [](std::uint32_t p) { return p % 2 == 1; };
+        std::uint32_t k = 1 + qi * 4;
+        std::uint32_t found = knn_search(view, q, k, 0.0f, metric, odd, heap);
+        std::vector<float> got(heap.d2, heap.d2 + found), want;
+        for (std::uint32_t p = 0; p < tree.x.size(); ++p)
+            if (odd(p)) want.push_back(metric(tree.x[p] - q.x, tree.y[p] - q.y, tree.z[p] - q.z));
+        std::sort(got.begin(), got.end());
+        std::sort(want.begin(), want.end());
+        want.resize(std::min<std::size_t>(want.size(), k));
+        INFO("query " << qi << " k " << k);
+        REQUIRE(got == want);
+    }
+}

@@ -95,3 +95,27 @@ TEST_CASE("The Cornell box goes through kdpm-shoot-photons and kdpm-build-photon
     CHECK(wrong.exit_code == 1);
     CHECK_THAT(wrong.output, Catch::StartsWith("kdpm-shoot-photons: error:"));
 }
+
+TEST_CASE("Sponza and Conference go through the photon pipeline when present", "[photons][tools][scenes]") {
+    if (test::shared_scenes_dir().empty()) {
+        WARN("../shared/scenes not found (set KDPM_SCENES): skipping Sponza and Conference");
+        return;
+    }
+    test::TempDir dir;
+    for (const char* card : {"scenes/sponza/sponza.json", "scenes/conference/conference.json"}) {
+        INFO(card);
+        auto kdg = (dir / "scene.kdg").string(), kdph = (dir / "scene.kdph").string(), kdp = (dir / "scene.kdp").string();
+        auto geo = test::run_tool("kdpm-build-geometry " + test::source_path(card) + " -o " + kdg + " --quiet");
+        if (geo.exit_code != 0) {
+            WARN(std::string(card) + ": geometry not built (" + geo.output + "), skipping");
+            continue;
+        }
+        auto shot = test::run_tool("kdpm-shoot-photons " + kdg + " -n 20000 -o " + kdph + " --quiet");
+        INFO(shot.output);
+        REQUIRE(shot.exit_code == 0);
+        REQUIRE(test::run_tool("kdpm-build-photons " + kdph + " -o " + kdp + " --quiet").exit_code == 0);
+        CHECK(test::run_tool("kdpm-validate " + kdph).exit_code == 0);
+        CHECK(test::run_tool("kdpm-validate " + kdp).exit_code == 0);
+        CHECK(PhotonMapFile::open(kdp).info().photon_count > 10000);
+    }
+}

@@ -117,3 +117,23 @@ TEST_CASE("Photons reflected by a mirror are flagged caustic and never stored on
     // About half of the light goes straight down onto the mirror, and all of that returns as caustics.
     CHECK(caustic > shot.info.emitted_count / 4);
 }
+
+// Lights are chosen in proportion to their power, so every emitted photon carries the same
+// power (total / N) whichever light it left, and the brighter light sends three times as many.
+TEST_CASE("Lights are chosen in proportion to their power", "[photons][shoot]") {
+    auto box = test::closed_box_two_lights(0.5f);
+    ShootOptions options;
+    options.photons = 40000;
+    options.max_bounces = 0;
+    auto shot = shoot_photons(box.view(), options);
+    const double each = shot.info.emitted_power[0] / options.photons;
+    CHECK(shot.info.emitted_power[0] == Approx(3.14159265 * (0.04 * 1.0 + 0.01 * 12.0)).epsilon(1e-5));
+    REQUIRE(shot.hits.size() == options.photons);  // closed box, direct hits only
+    std::size_t up = 0;
+    for (const auto& h : shot.hits) {
+        REQUIRE(h.power[0] == Approx(each).epsilon(1e-5));
+        up += h.direction[1] > 0.0f;  // the dim light faces down, the bright one up
+    }
+    const double down = static_cast<double>(shot.hits.size() - up);
+    CHECK(up / down == Approx(3.0).epsilon(0.05));
+}

@@ -26,7 +26,9 @@ GeometryFile file_of(const Scene& scene) {
 
 }  // namespace
 
-GeometryFile closed_box(float rho, bool mirror_floor) {
+namespace {
+
+Scene box_scene(float rho, bool mirror_floor) {
     Scene s;
     s.materials.push_back(diffuse(rho));
     MaterialRecord mirror{};
@@ -40,8 +42,24 @@ GeometryFile closed_box(float rho, bool mirror_floor) {
     add_quad(s, p[3], p[2], p[6], p[7], 0);                      // z = 1
     add_quad(s, p[0], p[3], p[7], p[4], 0);                      // x = 0
     add_quad(s, p[1], p[5], p[6], p[2], 0);                      // x = 1
+    return s;
+}
+
+}  // namespace
+
+GeometryFile closed_box(float rho, bool mirror_floor) {
+    Scene s = box_scene(rho, mirror_floor);
     const float l0[3] = {0.4f, 0.9f, 0.4f}, e1[3] = {0.2f, 0, 0}, e2[3] = {0, 0, 0.2f}, radiance[3] = {10, 5, 2};
     s.lights.push_back(make_parallelogram_light(l0, e1, e2, radiance));
+    return file_of(s);
+}
+
+GeometryFile closed_box_two_lights(float rho) {
+    Scene s = box_scene(rho, false);
+    const float a0[3] = {0.15f, 0.9f, 0.4f}, a1[3] = {0.2f, 0, 0}, a2[3] = {0, 0, 0.2f}, white[3] = {1, 1, 1};
+    const float b0[3] = {0.7f, 0.1f, 0.45f}, b1[3] = {0, 0, 0.1f}, b2[3] = {0.1f, 0, 0}, bright[3] = {12, 12, 12};
+    s.lights.push_back(make_parallelogram_light(a0, a1, a2, white));
+    s.lights.push_back(make_parallelogram_light(b0, b1, b2, bright));
     return file_of(s);
 }
 

@@ -7,14 +7,18 @@
 
 namespace kdpm {
 
+// Deepest geometry kd-tree a file may hold (inner nodes on a root-to-leaf path): the traversal
+// keeps one stack entry per level. Builders stay below it; validators refuse deeper trees.
+inline constexpr std::uint32_t kMaxKdTreeDepth = 64;
+
 // Summary of the scene and tree; section geometry.info, one record.
 struct GeometryInfo {
-    float bounds_min[3];
+    float bounds_min[3];             // bounds of the triangles in the tree = the root cell
     std::uint32_t triangle_count;
     float bounds_max[3];
     std::uint32_t node_count;
     std::uint32_t leaf_index_count;
-    std::uint32_t max_depth;
+    std::uint32_t max_depth;         // inner nodes on the longest root-to-leaf path
     std::uint32_t default_photons;   // from the scene card
     std::uint32_t default_bounces;
     std::uint32_t default_k;
@@ -32,6 +36,7 @@ struct TriangleRecord {
     float e2[3];                  // v2 - v0
     std::uint32_t flags;          // bit 0: has shading normals in geometry.normals
 };
+inline constexpr std::uint32_t kTriangleHasNormals = 1u;
 static_assert(sizeof(TriangleRecord) == 48);
 
 // Per-vertex shading normals of a triangle (same order as geometry.triangles).

@@ -23,6 +23,14 @@ std::string_view name(std::uint32_t id) {
         case ptree_power: return "photon_tree.power";
         case ptree_direction: return "photon_tree.direction";
         case ptree_flags: return "photon_tree.flags";
+        case ptree_caustic_info: return "caustic_tree.info";
+        case ptree_caustic_nodes: return "caustic_tree.nodes";
+        case ptree_caustic_pos_x: return "caustic_tree.x";
+        case ptree_caustic_pos_y: return "caustic_tree.y";
+        case ptree_caustic_pos_z: return "caustic_tree.z";
+        case ptree_caustic_power: return "caustic_tree.power";
+        case ptree_caustic_direction: return "caustic_tree.direction";
+        case ptree_caustic_flags: return "caustic_tree.flags";
         default: return "";
     }
 }

@@ -24,13 +24,22 @@ inline constexpr std::uint32_t hits_photons = 0x201;   // PhotonHit[]
 
 // photon kd-tree (.kdp)
 inline constexpr std::uint32_t ptree_info = 0x300;     // PhotonTreeInfo, one record
-inline constexpr std::uint32_t ptree_nodes = 0x301;    // PhotonNode[]
+inline constexpr std::uint32_t ptree_nodes = 0x301;    // KdNode[]
 inline constexpr std::uint32_t ptree_pos_x = 0x302;    // f32[] positions in leaf order
 inline constexpr std::uint32_t ptree_pos_y = 0x303;
 inline constexpr std::uint32_t ptree_pos_z = 0x304;
-inline constexpr std::uint32_t ptree_power = 0x305;    // packed power, one per photon
-inline constexpr std::uint32_t ptree_direction = 0x306;  // packed incoming direction + normal
-inline constexpr std::uint32_t ptree_flags = 0x307;    // u8/u32 flags per photon (caustic ...)
+inline constexpr std::uint32_t ptree_power = 0x305;    // u32 RGBE power, one per photon
+inline constexpr std::uint32_t ptree_direction = 0x306;  // PackedPhotonDirections[] (octahedral)
+inline constexpr std::uint32_t ptree_flags = 0x307;    // u32 flags per photon (caustic, bounce)
+// the caustic map of the same .kdp: the same fields at 0x310 + field (formats/photon_layout.h)
+inline constexpr std::uint32_t ptree_caustic_info = 0x310;
+inline constexpr std::uint32_t ptree_caustic_nodes = 0x311;
+inline constexpr std::uint32_t ptree_caustic_pos_x = 0x312;
+inline constexpr std::uint32_t ptree_caustic_pos_y = 0x313;
+inline constexpr std::uint32_t ptree_caustic_pos_z = 0x314;
+inline constexpr std::uint32_t ptree_caustic_power = 0x315;
+inline constexpr std::uint32_t ptree_caustic_direction = 0x316;
+inline constexpr std::uint32_t ptree_caustic_flags = 0x317;
 
 // test containers
 inline constexpr std::uint32_t test_first = 0xF00;

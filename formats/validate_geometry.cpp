@@ -1,8 +1,205 @@
+// Structural checks of a geometry kd-tree file (.kdg): required sections and record sizes,
+// every index in range, the tree shape (each node reached exactly once from the root, depth
+// bounded, splits inside their cells) and, exhaustively, full leaf coverage. Linear in the
+// file size except for the exhaustive check. Never trusts a count or index before checking it.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "formats/geometry_layout.h"
+#include "formats/section_ids.h"
+#include "formats/triangle_clip.h"
 #include "formats/validate_kinds.h"
 
 namespace kdpm {
 
-// Filled in with the geometry layout: required sections, index ranges, tree invariants.
-void validate_geometry_file(const ContainerReader&, const ValidationOptions&) {}
+namespace {
+
+[[noreturn]] void fail(const ContainerReader& file, const std::string& why) {
+    throw FormatError(file.name() + ": invalid geometry file: " + why);
+}
+
+struct TreeArrays {
+    std::span<const KdNode> nodes;
+    std::span<const std::uint32_t> leaf;
+    std::span<const TriangleRecord> tris;
+};
+
+struct WalkEntry {
+    std::uint32_t node;
+    std::uint32_t depth;
+    AxisBox cell;
+};
+
+void check_info(const ContainerReader& file, const GeometryInfo& info, const TreeArrays& t) {
+    if (info.triangle_count != t.tris.size()) fail(file, "info.triangle_count does not match geometry.triangles");
+    if (info.node_count != t.nodes.size()) fail(file, "info.node_count does not match geometry.nodes");
+    if (info.leaf_index_count != t.leaf.size())
+        fail(file, "info.leaf_index_count does not match geometry.leaf_indices");
+    if (info.max_depth > kMaxKdTreeDepth)
+        fail(file, "tree depth " + std::to_string(info.max_depth) + " exceeds " + std::to_string(kMaxKdTreeDepth));
+    if (info.up_axis > 2) fail(file, "up_axis must be 0, 1 or 2");
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
+            info.bounds_min[a] > info.bounds_max[a])
+            fail(file, "scene bounds are not finite and ordered");
+    }
+    if (t.nodes.empty()) fail(file, "the tree has no nodes");
+}
+
+// Depth-first walk from the root: each node once, children in range, splits inside the cell.
+void check_tree(const ContainerReader& file, const GeometryInfo& info, const TreeArrays& t) {
+    const std::size_t count = t.nodes.size();
+    std::vector<std::uint8_t> seen(count, 0);
+    std::vector<WalkEntry> stack;
+    AxisBox root;
+    for (int a = 0; a < 3; ++a) root.lo[a] = info.bounds_min[a], root.hi[a] = info.bounds_max[a];
+    stack.push_back({0, 0, root});
+    std::uint32_t max_depth = 0;
+    std::size_t reached = 0;
+    while (!stack.empty()) {
+        WalkEntry e = stack.back();
+        stack.pop_back();
+        if (seen[e.node]) fail(file, "node " + std::to_string(e.node) + " is reached twice");
+        seen[e.node] = 1;
+        ++reached;
+        const KdNode& n = t.nodes[e.node];
+        if (n.is_leaf()) {
+            if (static_cast<std::uint64_t>(n.first()) + n.count() > t.leaf.size())
+                fail(file, "leaf " + std::to_string(e.node) + " lists items past the leaf index array");
+            max_depth = std::max(max_depth, e.depth);
+            continue;
+        }
+        const int axis = n.axis();
+        const float split = n.split();
+        if (!(split >= e.cell.lo[axis] && split <= e.cell.hi[axis]))
+            fail(file, "node " + std::to_string(e.node) + " splits outside its cell");
+        const std::uint64_t below = static_cast<std::uint64_t>(e.node) + 1, above = n.above_child();
+        if (below >= count || above >= count || above <= e.node)
+            fail(file, "node " + std::to_string(e.node) + " has a child index out of range");
+        if (e.depth + 1 > kMaxKdTreeDepth)
+            fail(file, "tree deeper than " + std::to_string(kMaxKdTreeDepth) + " levels");
+        AxisBox lo_cell = e.cell, hi_cell = e.cell;
+        lo_cell.hi[axis] = split;
+        hi_cell.lo[axis] = split;
+        stack.push_back({static_cast<std::uint32_t>(above), e.depth + 1, hi_cell});
+        stack.push_back({static_cast<std::uint32_t>(below), e.depth + 1, lo_cell});
+    }
+    if (reached != count) fail(file, std::to_string(count - reached) + " nodes are not reachable from the root");
+    if (max_depth != info.max_depth)
+        fail(file, "info.max_depth is " + std::to_string(info.max_depth) + " but the tree is " +
+                       std::to_string(max_depth) + " deep");
+}
+
+void check_indices(const ContainerReader& file, const TreeArrays& t, std::span<const MaterialRecord> materials,
+                   std::span<const AreaLightRecord> lights, bool has_normals) {
+    const std::size_t tri_count = t.tris.size();
+    for (std::size_t i = 0; i < t.leaf.size(); ++i)
+        if (t.leaf[i] >= tri_count)
+            fail(file, "leaf index " + std::to_string(i) + " names triangle " + std::to_string(t.leaf[i]) +
+                           " of " + std::to_string(tri_count));
+    for (std::size_t i = 0; i < tri_count; ++i) {
+        if (t.tris[i].material >= materials.size())
+            fail(file, "triangle " + std::to_string(i) + " has material index out of range");
+        if ((t.tris[i].flags & kTriangleHasNormals) && !has_normals)
+            fail(file, "triangle " + std::to_string(i) + " claims shading normals but the file has none");
+    }
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].kind > static_cast<std::uint32_t>(MaterialKind::glass))
+            fail(file, "material " + std::to_string(i) + " has an unknown kind");
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const AreaLightRecord& l = lights[i];
+        if (l.shape > static_cast<std::uint32_t>(LightShape::parallelogram))
+            fail(file, "light " + std::to_string(i) + " has an unknown shape");
+        if (l.triangle != 0xffffffffu && l.triangle >= tri_count)
+            fail(file, "light " + std::to_string(i) + " names a triangle out of range");
+    }
+}
+
+// Every usable triangle that overlaps the inside of a leaf cell (the cell shrunk by a small
+// epsilon, so triangles merely touching a face need not be listed) is listed in that leaf.
+void check_coverage(const ContainerReader& file, const GeometryInfo& info, const TreeArrays& t) {
+    float extent = 0.0f;
+    for (int a = 0; a < 3; ++a) extent = std::max(extent, info.bounds_max[a] - info.bounds_min[a]);
+    const float eps = 1e-5f * extent + 1e-30f;
+
+    // Sorted copy of each leaf's list, for membership tests.
+    std::vector<std::uint32_t> sorted(t.leaf.begin(), t.leaf.end());
+    for (const KdNode& n : t.nodes)
+        if (n.is_leaf()) std::sort(sorted.begin() + n.first(), sorted.begin() + n.first() + n.count());
+
+    AxisBox root;
+    for (int a = 0; a < 3; ++a) root.lo[a] = info.bounds_min[a], root.hi[a] = info.bounds_max[a];
+    std::vector<WalkEntry> stack;
+    for (std::uint32_t ti = 0; ti < t.tris.size(); ++ti) {
+        const TriangleRecord& tri = t.tris[ti];
+        if (!triangle_is_usable(tri)) continue;
+        double v[3][3];
+        triangle_vertices(tri, v);
+        const AxisBox bounds = triangle_bounds(tri);
+        const float* lo = bounds.lo;
+        const float* hi = bounds.hi;
+        stack.clear();
+        stack.push_back({0, 0, root});
+        while (!stack.empty()) {
+            WalkEntry e = stack.back();
+            stack.pop_back();
+            const KdNode& n = t.nodes[e.node];
+            if (!n.is_leaf()) {
+                const int axis = n.axis();
+                const float split = n.split();
+                AxisBox lo_cell = e.cell, hi_cell = e.cell;
+                lo_cell.hi[axis] = split;
+                hi_cell.lo[axis] = split;
+                if (hi[axis] >= split) stack.push_back({n.above_child(), e.depth + 1, hi_cell});
+                if (lo[axis] <= split) stack.push_back({e.node + 1, e.depth + 1, lo_cell});
+                continue;
+            }
+            // The cell shrunk by eps on each axis (a thin cell by a quarter of its width): a
+            // triangle only touching a face, or lying within that distance of it, need not be
+            // listed. A flat axis (a flat scene) is not shrunk; a cell too thin to shrink in
+            // float (a few ulps) requires nothing.
+            AxisBox inner = e.cell;
+            bool too_thin = false;
+            for (int a = 0; a < 3; ++a) {
+                const float width = inner.hi[a] - inner.lo[a];
+                if (width == 0.0f) continue;
+                const float shrink = std::min(eps, 0.25f * width);
+                const float lo_in = inner.lo[a] + shrink, hi_in = inner.hi[a] - shrink;
+                if (!(lo_in > inner.lo[a] && hi_in < inner.hi[a] && lo_in <= hi_in)) too_thin = true;
+                inner.lo[a] = lo_in;
+                inner.hi[a] = hi_in;
+            }
+            AxisBox clipped;
+            if (too_thin || !clip_triangle_to_box(v, inner, clipped)) continue;
+            const auto first = sorted.begin() + n.first(), last = first + n.count();
+            if (!std::binary_search(first, last, ti))
+                fail(file, "triangle " + std::to_string(ti) + " overlaps leaf node " + std::to_string(e.node) +
+                               " but is not listed in it");
+        }
+    }
+}
+
+}  // namespace
+
+void validate_geometry_file(const ContainerReader& file, const ValidationOptions& options) {
+    const GeometryInfo& info = file.record<GeometryInfo>(section::geo_info);
+    file.record<CameraRecord>(section::geo_camera);
+    TreeArrays t{file.section<KdNode>(section::geo_nodes), file.section<std::uint32_t>(section::geo_leaf_indices),
+                 file.section<TriangleRecord>(section::geo_triangles)};
+    const auto materials = file.section<MaterialRecord>(section::geo_materials);
+    const auto lights = file.section<AreaLightRecord>(section::geo_lights);
+    const auto normals = file.optional_section<TriangleNormals>(section::geo_normals);
+    if (normals && normals->size() != t.tris.size())
+        fail(file, "geometry.normals must hold one record per triangle");
+
+    check_info(file, info, t);
+    check_tree(file, info, t);
+    check_indices(file, t, materials, lights, normals.has_value());
+    if (options.exhaustive) check_coverage(file, info, t);
+}
 
 }  // namespace kdpm

@@ -1,8 +1,119 @@
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "formats/photon_layout.h"
+#include "formats/section_ids.h"
 #include "formats/validate_kinds.h"
 
 namespace kdpm {
+namespace {
 
-// Filled in with the photon_tree layout: required sections, index ranges, tree invariants.
-void validate_photon_tree_file(const ContainerReader&, const ValidationOptions&) {}
+// One photon map of a .kdp: sections present with matching counts, nodes forming one tree in
+// depth-first order no deeper than kMaxPhotonTreeDepth, leaves covering the photons exactly
+// once in order, every photon inside its leaf's cell, finite positions, known flags.
+void validate_map(const ContainerReader& file, PhotonMapKind map) {
+    const std::string label = map == PhotonMapKind::global ? "photon tree" : "caustic tree";
+    auto fail = [&](const std::string& why) { throw FormatError(file.name() + ": " + label + ": " + why); };
+    auto id = [&](PhotonTreeField f) { return photon_tree_section(map, f); };
+
+    const auto& info = file.record<PhotonTreeInfo>(id(ptree_field_info));
+    auto nodes = file.section<KdNode>(id(ptree_field_nodes));
+    auto x = file.section<float>(id(ptree_field_x));
+    auto y = file.section<float>(id(ptree_field_y));
+    auto z = file.section<float>(id(ptree_field_z));
+    auto power = file.section<std::uint32_t>(id(ptree_field_power));
+    auto dirs = file.section<PackedPhotonDirections>(id(ptree_field_directions));
+    auto flags = file.section<std::uint32_t>(id(ptree_field_flags));
+
+    const std::uint64_t n = info.photon_count;
+    if (x.size() != n || y.size() != n || z.size() != n || power.size() != n || dirs.size() != n || flags.size() != n)
+        fail("photon arrays do not all hold photon_count = " + std::to_string(n) + " entries");
+    if (nodes.empty()) fail("no nodes");
+    if (nodes.size() != info.node_count) fail("node_count does not match the nodes section");
+    if (info.builder > 1) fail("unknown builder " + std::to_string(info.builder));
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
+            info.bounds_min[a] > info.bounds_max[a])
+            fail("bounds are not finite and ordered");
+    if (info.max_depth > kMaxPhotonTreeDepth) fail("max_depth exceeds " + std::to_string(kMaxPhotonTreeDepth));
+
+    const float* coord[3] = {x.data(), y.data(), z.data()};
+    for (std::uint64_t i = 0; i < n; ++i) {
+        if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i]))
+            fail("photon " + std::to_string(i) + " has a non-finite position");
+        if (flags[i] & ~kPhotonKnownFlags) fail("photon " + std::to_string(i) + " has unknown flag bits");
+        if (photon_bounce(flags[i]) > info.max_bounces) fail("photon " + std::to_string(i) + " has a bounce beyond max_bounces");
+    }
+
+    // Pre-order walk: the k-th visited node must be node k, so the nodes are exactly one tree.
+    struct Item {
+        std::uint32_t node, depth;
+        float lo[3], hi[3];
+        bool hi_open[3];  // coordinate must be < hi (a split above) rather than <= hi (the root bounds)
+    };
+    std::vector<Item> stack;
+    Item root{0, 0, {}, {}, {false, false, false}};
+    for (int a = 0; a < 3; ++a) {
+        root.lo[a] = info.bounds_min[a];
+        root.hi[a] = info.bounds_max[a];
+    }
+    stack.push_back(root);
+    std::uint64_t visited = 0, next_photon = 0, leaves = 0;
+    std::uint32_t depth_seen = 0, largest_leaf = 0;
+    while (!stack.empty()) {
+        Item it = stack.back();
+        stack.pop_back();
+        if (it.node != visited) fail("nodes are not one tree in depth-first order (node " + std::to_string(it.node) + ")");
+        ++visited;
+        if (it.depth > kMaxPhotonTreeDepth) fail("deeper than " + std::to_string(kMaxPhotonTreeDepth));
+        depth_seen = std::max(depth_seen, it.depth);
+        const KdNode& node = nodes[it.node];
+        if (node.is_leaf()) {
+            ++leaves;
+            largest_leaf = std::max(largest_leaf, node.count());
+            if (node.first() != next_photon)
+                fail("leaf " + std::to_string(it.node) + " starts at photon " + std::to_string(node.first()) +
+                     ", expected " + std::to_string(next_photon));
+            if (node.count() > n - next_photon) fail("leaf " + std::to_string(it.node) + " runs past the photons");
+            for (std::uint64_t p = node.first(); p < node.first() + std::uint64_t{node.count()}; ++p)
+                for (int a = 0; a < 3; ++a) {
+                    float c = coord[a][p];
+                    if (c < it.lo[a] || (it.hi_open[a] ? !(c < it.hi[a]) : c > it.hi[a]))
+                        fail("photon " + std::to_string(p) + " lies outside the cell of leaf " + std::to_string(it.node));
+                }
+            next_photon += node.count();
+            continue;
+        }
+        const int axis = node.axis();
+        const float s = node.split();
+        const std::uint32_t above = node.above_child();
+        if (!std::isfinite(s)) fail("node " + std::to_string(it.node) + " has a non-finite split");
+        if (above <= it.node + 1 || above >= nodes.size() || it.node + 1 >= nodes.size())
+            fail("node " + std::to_string(it.node) + " has a child index out of range");
+        Item lo = it, hi = it;
+        lo.node = it.node + 1;
+        hi.node = above;
+        lo.depth = hi.depth = it.depth + 1;
+        lo.hi[axis] = s;
+        lo.hi_open[axis] = true;
+        hi.lo[axis] = s;
+        stack.push_back(hi);
+        stack.push_back(lo);
+    }
+    if (visited != nodes.size()) fail("unreachable nodes");
+    if (next_photon != n) fail("leaves cover " + std::to_string(next_photon) + " of " + std::to_string(n) + " photons");
+    if (leaves != info.leaf_count || depth_seen != info.max_depth || largest_leaf != info.max_leaf_size)
+        fail("info statistics (leaves, depth, largest leaf) do not match the nodes");
+}
+
+}  // namespace
+
+void validate_photon_tree_file(const ContainerReader& file, const ValidationOptions&) {
+    validate_map(file, PhotonMapKind::global);
+    if (file.find(photon_tree_section(PhotonMapKind::caustic, ptree_field_info)))
+        validate_map(file, PhotonMapKind::caustic);
+}
 
 }  // namespace kdpm

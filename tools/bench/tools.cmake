@@ -1,1 +1,22 @@
-# tools/bench: executables of this area.
+# kdpm-bench and its optional peers (Embree 3, nanoflann): bench-only, never needed by the
+# toolchain or runtime; each peer is compiled in when its Debian package is installed.
+find_package(embree 3 QUIET)
+find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp)
+
+add_library(kdpm_bench_peers STATIC)
+target_link_libraries(kdpm_bench_peers PUBLIC kdpm_backend_cpu)
+if(embree_FOUND)
+  target_sources(kdpm_bench_peers PRIVATE bench/peer_embree.cpp)
+  target_link_libraries(kdpm_bench_peers PRIVATE embree)
+  target_compile_definitions(kdpm_bench_peers PUBLIC KDPM_HAVE_EMBREE=1)
+endif()
+if(NANOFLANN_INCLUDE_DIR)
+  target_sources(kdpm_bench_peers PRIVATE bench/peer_nanoflann.cpp)
+  target_include_directories(kdpm_bench_peers PRIVATE ${NANOFLANN_INCLUDE_DIR})
+  target_compile_definitions(kdpm_bench_peers PUBLIC KDPM_HAVE_NANOFLANN=1)
+endif()
+message(STATUS "kdpm-bench peers: Embree ${embree_FOUND}, nanoflann ${NANOFLANN_INCLUDE_DIR}")
+
+kdpm_tool(kdpm-bench bench/bench_main.cpp
+          kdpm_bench_peers kdpm_render kdpm_geometry_builder kdpm_photon_shooter kdpm_builders_photons)
+target_sources(kdpm-bench PRIVATE bench/scene_bench.cpp bench/bench_report.cpp)

@@ -1,0 +1,19 @@
+#pragma once
+// Parameters of the SAH geometry kd-tree build (Wald & Havran 2006), with the defaults used by
+// kdpm-build-geometry. All of them are recorded in the file's metadata.
+#include <cstdint>
+
+namespace kdpm {
+
+struct KdBuildParams {
+    float traversal_cost = 1.0f;     // K_T: cost of stepping through one inner node
+    float intersection_cost = 1.5f;  // K_I: cost of one ray/triangle test
+    float empty_bonus = 0.2f;        // split cost is scaled by (1 - bonus) when one side is empty
+    int max_depth = 0;               // 0: automatic, 8 + 1.3 log2(N), capped below kMaxKdTreeDepth
+    int leaf_size = 0;               // nodes with at most this many triangles become leaves unsplit
+};
+
+// The depth limit the build uses for `triangles` triangles.
+std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t triangles);
+
+}  // namespace kdpm

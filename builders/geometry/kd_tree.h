@@ -1,0 +1,33 @@
+#pragma once
+// A built geometry kd-tree in its file layout, and the statistics printed and recorded for it.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "builders/geometry/kd_build_params.h"
+#include "formats/kd_node.h"
+#include "formats/triangle_clip.h"
+
+namespace kdpm {
+
+struct KdTreeStats {
+    std::uint64_t nodes = 0;
+    std::uint64_t leaves = 0;
+    std::uint64_t empty_leaves = 0;
+    std::uint64_t leaf_references = 0;   // total length of the leaf index array
+    std::uint32_t max_depth = 0;         // inner nodes on the longest root-to-leaf path
+    double mean_leaf_triangles = 0.0;    // over non-empty leaves
+    double sah_cost = 0.0;               // K_T * sum inner SA + K_I * sum leaf SA * n, over root SA
+};
+
+struct KdTree {
+    AxisBox bounds{};                      // root cell: bounds of the usable triangles
+    std::vector<KdNode> nodes;             // depth first, node 0 the root
+    std::vector<std::uint32_t> leaf_indices;
+    KdTreeStats stats;
+};
+
+// Walks a tree in file layout and measures it (used by the builder and by tests).
+KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds, const KdBuildParams& params);
+
+}  // namespace kdpm

@@ -1,0 +1,413 @@
+#include "builders/geometry/sah_kd_builder.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <tbb/parallel_invoke.h>
+
+#include "builders/geometry/sah_cost.h"
+#include "formats/triangle_clip.h"
+
+namespace kdpm {
+
+std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t triangles) {
+    const std::uint32_t cap = kMaxKdTreeDepth - 4;
+    if (params.max_depth > 0) return std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
+    const double automatic = 8.0 + 1.3 * std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
+    return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), cap);
+}
+
+namespace {
+
+// An event is a triangle's clipped bound on one axis: where it ends, lies (planar) or starts.
+// Ordered by position, then end < planar < start (the order the sweep needs), then triangle.
+enum EventType : std::uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
+constexpr std::uint32_t kLocalMask = (1u << 30) - 1;
+
+// Positions as order-preserving integers, so that an event sorts with one 64-bit compare.
+// -0 is folded into +0 first, so equal positions have equal bits.
+inline std::uint32_t order_bits(float f) {
+    f += 0.0f;
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+inline float from_order_bits(std::uint32_t o) {
+    const std::uint32_t u = (o & 0x80000000u) ? (o & 0x7fffffffu) : ~o;
+    float f;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+struct Event {
+    std::uint64_t bits;  // order_bits(pos) << 32 | type << 30 | index of the triangle in the node's list
+    static Event make(float pos, EventType type, std::uint32_t local) {
+        return Event{static_cast<std::uint64_t>(order_bits(pos)) << 32 | static_cast<std::uint64_t>(type) << 30 | local};
+    }
+    std::uint32_t pos_bits() const { return static_cast<std::uint32_t>(bits >> 32); }
+    float pos() const { return from_order_bits(pos_bits()); }
+    EventType type() const { return static_cast<EventType>((bits >> 30) & 3u); }
+    std::uint32_t local() const { return static_cast<std::uint32_t>(bits) & kLocalMask; }
+    Event with_local(std::uint32_t local) const { return Event{(bits & ~std::uint64_t{kLocalMask}) | local}; }
+};
+
+inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
+
+inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {
+    for (int a = 0; a < 3; ++a) {
+        if (b.lo[a] == b.hi[a]) {
+            ev[a].push_back(Event::make(b.lo[a], kPlanar, local));
+        } else {
+            ev[a].push_back(Event::make(b.lo[a], kStart, local));
+            ev[a].push_back(Event::make(b.hi[a], kEnd, local));
+        }
+    }
+}
+
+struct NodeInput {
+    AxisBox cell{};
+    std::vector<std::uint32_t> tris;  // global triangle indices, ascending
+    std::vector<Event> ev[3];         // sorted, per axis
+    void release() {
+        std::vector<std::uint32_t>().swap(tris);
+        for (auto& e : ev) std::vector<Event>().swap(e);
+    }
+};
+
+struct Split {
+    int axis = -1;  // -1: make a leaf
+    float pos = 0.0f;
+    bool planar_left = true;
+};
+
+// A subtree in file layout with node and leaf indices relative to its own arrays.
+struct Flat {
+    std::vector<KdNode> nodes;
+    std::vector<std::uint32_t> leaf;
+};
+
+// Large nodes are split into pieces whose subtrees are built in parallel; the choice depends on
+// the triangle count only, so the piece structure (and the file) does not depend on threads.
+struct Piece {
+    bool is_split = false;
+    Split split;
+    std::unique_ptr<Piece> below, above;
+    Flat flat;
+};
+
+constexpr std::size_t kParallelThreshold = 4096;
+
+class Builder {
+public:
+    Builder(std::span<const TriangleRecord> tris, const KdBuildParams& params,
+            const std::function<void(double)>& progress)
+        : tris_(tris), params_(params), progress_(progress) {}
+
+    KdTree build() {
+        KdTree tree;
+        NodeInput root;
+        for (std::uint32_t i = 0; i < tris_.size(); ++i)
+            if (triangle_is_usable(tris_[i])) root.tris.push_back(i);
+        if (root.tris.size() > kLocalMask) throw std::runtime_error("too many triangles for one kd-tree");
+        max_depth_ = effective_max_depth(params_, root.tris.size());
+
+        AxisBox bounds{{0, 0, 0}, {0, 0, 0}};
+        if (!root.tris.empty()) {
+            for (int a = 0; a < 3; ++a) bounds.lo[a] = INFINITY, bounds.hi[a] = -INFINITY;
+            for (std::uint32_t g : root.tris) {
+                const AxisBox b = triangle_bounds(tris_[g]);
+                for (int a = 0; a < 3; ++a)
+                    bounds.lo[a] = std::min(bounds.lo[a], b.lo[a]), bounds.hi[a] = std::max(bounds.hi[a], b.hi[a]);
+            }
+        }
+        root.cell = bounds;
+        root_volume_ = volume(bounds);
+        for (auto& e : root.ev) e.reserve(2 * root.tris.size());
+        std::vector<std::uint32_t> kept;
+        kept.reserve(root.tris.size());
+        for (std::uint32_t g : root.tris) {
+            double v[3][3];
+            triangle_vertices(tris_[g], v);
+            AxisBox b;
+            if (!clip_triangle_to_box(v, bounds, b)) continue;
+            add_events(b, static_cast<std::uint32_t>(kept.size()), root.ev);
+            kept.push_back(g);
+        }
+        root.tris = std::move(kept);
+        tbb::parallel_invoke([&] { std::sort(root.ev[0].begin(), root.ev[0].end()); },
+                             [&] { std::sort(root.ev[1].begin(), root.ev[1].end()); },
+                             [&] { std::sort(root.ev[2].begin(), root.ev[2].end()); });
+
+        std::unique_ptr<Piece> piece = build_piece(std::move(root), 0);
+        tree.bounds = bounds;
+        emit(*piece, tree.nodes, tree.leaf_indices);
+        tree.stats = measure_kd_tree(tree.nodes, bounds, params_);
+        if (progress_) progress_(1.0);
+        return tree;
+    }
+
+private:
+    static double volume(const AxisBox& b) {
+        return static_cast<double>(b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
+    }
+
+    Split find_split(const NodeInput& in, std::uint32_t depth) const {
+        Split best;
+        const std::uint32_t n = static_cast<std::uint32_t>(in.tris.size());
+        if (n == 0 || n <= static_cast<std::uint32_t>(std::max(params_.leaf_size, 0)) || depth >= max_depth_)
+            return best;
+        const float area = box_area(in.cell);
+        if (!(area > 0.0f)) return best;
+        float best_cost = params_.intersection_cost * static_cast<float>(n);
+        for (int k = 0; k < 3; ++k) {
+            const float lo = in.cell.lo[k], hi = in.cell.hi[k];
+            if (!(hi > lo)) continue;
+            const std::vector<Event>& e = in.ev[k];
+            const std::size_t m = e.size();
+            std::uint32_t nl = 0, nr = n;
+            std::size_t i = 0;
+            while (i < m) {
+                const std::uint32_t pb = e[i].pos_bits();
+                std::uint32_t ends = 0, planar = 0, starts = 0;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kEnd) ++ends, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kPlanar) ++planar, ++i;
+                while (i < m && e[i].pos_bits() == pb && e[i].type() == kStart) ++starts, ++i;
+                const float p = from_order_bits(pb);
+                nr -= planar + ends;
+                if (p > lo && p < hi) {
+                    const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
+                    if (c.cost < best_cost) {
+                        best_cost = c.cost;
+                        best = Split{k, p, c.planar_left};
+                    }
+                }
+                nl += starts + planar;
+            }
+        }
+        return best;
+    }
+
+    // Per-thread scratch of split_node, reused to keep small nodes free of allocations.
+    struct Scratch {
+        std::vector<std::uint8_t> side;
+        std::vector<std::uint32_t> lmap, rmap;
+        std::vector<Event> fresh_l[3], fresh_r[3];
+    };
+
+    // Distributes the node's triangles and events to its children. Triangles on one side keep
+    // their (already sorted) events; straddling triangles are clipped to each child cell and
+    // their fresh events are sorted and merged in, in the same pass.
+    void split_node(NodeInput& in, const Split& s, NodeInput& left, NodeInput& right) const {
+        enum : std::uint8_t { kBoth = 0, kLeft = 1, kRight = 2 };
+        thread_local Scratch scratch;
+        const std::size_t n = in.tris.size();
+        const int k = s.axis;
+        const float p = s.pos;
+        std::vector<std::uint8_t>& side = scratch.side;
+        side.assign(n, kBoth);
+        const std::uint32_t pb = order_bits(p);
+        for (const Event& e : in.ev[k]) {
+            const EventType t = e.type();
+            const std::uint32_t eb = e.pos_bits();
+            if (t == kEnd && eb <= pb) side[e.local()] = kLeft;
+            else if (t == kStart && eb >= pb) side[e.local()] = kRight;
+            else if (t == kPlanar) side[e.local()] = (eb < pb || (eb == pb && s.planar_left)) ? kLeft : kRight;
+        }
+        left.cell = in.cell;
+        right.cell = in.cell;
+        left.cell.hi[k] = p;
+        right.cell.lo[k] = p;
+
+        std::vector<std::uint32_t>& lmap = scratch.lmap;
+        std::vector<std::uint32_t>& rmap = scratch.rmap;
+        lmap.resize(n);
+        rmap.resize(n);
+        for (int a = 0; a < 3; ++a) scratch.fresh_l[a].clear(), scratch.fresh_r[a].clear();
+        std::size_t n_left = 0, n_right = 0;
+        for (std::size_t i = 0; i < n; ++i) n_left += side[i] != kRight, n_right += side[i] != kLeft;
+        left.tris.reserve(n_left);
+        right.tris.reserve(n_right);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t g = in.tris[i];
+            if (side[i] == kLeft) {
+                lmap[i] = static_cast<std::uint32_t>(left.tris.size());
+                left.tris.push_back(g);
+            } else if (side[i] == kRight) {
+                rmap[i] = static_cast<std::uint32_t>(right.tris.size());
+                right.tris.push_back(g);
+            } else {
+                double v[3][3];
+                triangle_vertices(tris_[g], v);
+                AxisBox b;
+                if (clip_triangle_to_box(v, left.cell, b)) {
+                    lmap[i] = static_cast<std::uint32_t>(left.tris.size());
+                    left.tris.push_back(g);
+                    add_events(b, lmap[i], scratch.fresh_l);
+                }
+                if (clip_triangle_to_box(v, right.cell, b)) {
+                    rmap[i] = static_cast<std::uint32_t>(right.tris.size());
+                    right.tris.push_back(g);
+                    add_events(b, rmap[i], scratch.fresh_r);
+                }
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            std::vector<Event>& fl = scratch.fresh_l[a];
+            std::vector<Event>& fr = scratch.fresh_r[a];
+            std::sort(fl.begin(), fl.end());
+            std::sort(fr.begin(), fr.end());
+            std::vector<Event>& el = left.ev[a];
+            std::vector<Event>& er = right.ev[a];
+            // Each one-sided triangle has one or two events per axis: reserve for two.
+            el.reserve(2 * n_left);
+            er.reserve(2 * n_right);
+            std::size_t il = 0, ir = 0;
+            const std::uint8_t* side_of = side.data();
+            const std::uint32_t* lm = lmap.data();
+            const std::uint32_t* rm = rmap.data();
+            const std::size_t nfl = fl.size(), nfr = fr.size();
+            for (const Event& e : in.ev[a]) {
+                const std::uint32_t i = e.local();
+                const std::uint8_t sd = side_of[i];
+                if (sd == kBoth) continue;
+                if (sd == kLeft) {
+                    const Event moved = e.with_local(lm[i]);
+                    while (il < nfl && fl[il] < moved) el.push_back(fl[il++]);
+                    el.push_back(moved);
+                } else {
+                    const Event moved = e.with_local(rm[i]);
+                    while (ir < nfr && fr[ir] < moved) er.push_back(fr[ir++]);
+                    er.push_back(moved);
+                }
+            }
+            el.insert(el.end(), fl.begin() + static_cast<std::ptrdiff_t>(il), fl.end());
+            er.insert(er.end(), fr.begin() + static_cast<std::ptrdiff_t>(ir), fr.end());
+        }
+    }
+
+    std::unique_ptr<Piece> build_piece(NodeInput&& in, std::uint32_t depth) {
+        auto piece = std::make_unique<Piece>();
+        if (in.tris.size() > kParallelThreshold) {
+            const Split s = find_split(in, depth);
+            if (s.axis >= 0) {
+                NodeInput left, right;
+                split_node(in, s, left, right);
+                in.release();
+                piece->is_split = true;
+                piece->split = s;
+                tbb::parallel_invoke([&] { piece->below = build_piece(std::move(left), depth + 1); },
+                                     [&] { piece->above = build_piece(std::move(right), depth + 1); });
+                return piece;
+            }
+        }
+        build_flat(in, depth, piece->flat);
+        return piece;
+    }
+
+    void build_flat(NodeInput& in, std::uint32_t depth, Flat& out) {
+        const Split s = find_split(in, depth);
+        if (s.axis < 0) {
+            make_leaf(in, out);
+            return;
+        }
+        NodeInput left, right;
+        split_node(in, s, left, right);
+        in.release();
+        const std::size_t index = out.nodes.size();
+        out.nodes.push_back(KdNode{});
+        build_flat(left, depth + 1, out);
+        left.release();
+        out.nodes[index] = KdNode::inner(s.axis, s.pos, checked_index(out.nodes.size()));
+        build_flat(right, depth + 1, out);
+    }
+
+    void make_leaf(const NodeInput& in, Flat& out) {
+        out.nodes.push_back(KdNode::leaf(checked_index(out.leaf.size()), checked_index(in.tris.size())));
+        out.leaf.insert(out.leaf.end(), in.tris.begin(), in.tris.end());
+        if (progress_ && root_volume_ > 0.0) {
+            const double done = done_volume_.fetch_add(volume(in.cell)) + volume(in.cell);
+            progress_(std::min(0.99, done / root_volume_));
+        }
+    }
+
+    static std::uint32_t checked_index(std::size_t i) {
+        if (i > KdNode::kMaxIndex) throw std::runtime_error("kd-tree too large for 30-bit node indices");
+        return static_cast<std::uint32_t>(i);
+    }
+
+    static void emit(const Piece& piece, std::vector<KdNode>& nodes, std::vector<std::uint32_t>& leaf) {
+        if (piece.is_split) {
+            const std::size_t index = nodes.size();
+            nodes.push_back(KdNode{});
+            emit(*piece.below, nodes, leaf);
+            nodes[index] = KdNode::inner(piece.split.axis, piece.split.pos, checked_index(nodes.size()));
+            emit(*piece.above, nodes, leaf);
+            return;
+        }
+        const std::size_t base = nodes.size(), leaf_base = leaf.size();
+        for (const KdNode& n : piece.flat.nodes) {
+            if (n.is_leaf()) nodes.push_back(KdNode::leaf(checked_index(n.first() + leaf_base), n.count()));
+            else nodes.push_back(KdNode::inner(n.axis(), n.split(), checked_index(n.above_child() + base)));
+        }
+        leaf.insert(leaf.end(), piece.flat.leaf.begin(), piece.flat.leaf.end());
+    }
+
+    std::span<const TriangleRecord> tris_;
+    KdBuildParams params_;
+    const std::function<void(double)>& progress_;
+    std::uint32_t max_depth_ = 0;
+    double root_volume_ = 0.0;
+    std::atomic<double> done_volume_{0.0};
+};
+
+}  // namespace
+
+KdTree build_sah_kd_tree(std::span<const TriangleRecord> triangles, const KdBuildParams& params,
+                         const std::function<void(double)>& progress) {
+    return Builder(triangles, params, progress).build();
+}
+
+KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds, const KdBuildParams& params) {
+    KdTreeStats s;
+    s.nodes = nodes.size();
+    if (nodes.empty()) return s;
+    const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
+    struct Entry {
+        std::uint32_t node, depth;
+        AxisBox cell;
+    };
+    std::vector<Entry> stack{{0, 0, bounds}};
+    double inner_area = 0.0, leaf_area_weighted = 0.0;
+    std::uint64_t nonempty = 0;
+    while (!stack.empty()) {
+        const Entry e = stack.back();
+        stack.pop_back();
+        const KdNode& n = nodes[e.node];
+        const double area = box_area(e.cell);
+        if (n.is_leaf()) {
+            ++s.leaves;
+            s.leaf_references += n.count();
+            if (n.count() == 0) ++s.empty_leaves;
+            else ++nonempty;
+            s.max_depth = std::max(s.max_depth, e.depth);
+            leaf_area_weighted += area * n.count();
+            continue;
+        }
+        inner_area += area;
+        AxisBox lo = e.cell, hi = e.cell;
+        lo.hi[n.axis()] = n.split();
+        hi.lo[n.axis()] = n.split();
+        stack.push_back({n.above_child(), e.depth + 1, hi});
+        stack.push_back({e.node + 1, e.depth + 1, lo});
+    }
+    s.mean_leaf_triangles = nonempty ? static_cast<double>(s.leaf_references) / static_cast<double>(nonempty) : 0.0;
+    s.sah_cost = (params.traversal_cost * inner_area + params.intersection_cost * leaf_area_weighted) / root_area;
+    return s;
+}
+
+}  // namespace kdpm

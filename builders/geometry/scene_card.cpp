@@ -1,0 +1,148 @@
+#include "builders/geometry/scene_card.h"
+
+#include <rapidjson/document.h>
+#include <rapidjson/error/en.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "builders/geometry/scene_import.h"
+#include "formats/format_error.h"
+
+namespace kdpm {
+
+namespace {
+
+namespace fs = std::filesystem;
+using rapidjson::Value;
+
+struct Card {
+    std::string name;
+    rapidjson::Document doc;
+
+    [[noreturn]] void fail(const std::string& why) const { throw FormatError(name + ": " + why); }
+
+    void vec3(const Value& v, const char* key, float (&out)[3]) const {
+        if (!v.IsArray() || v.Size() != 3) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+        for (unsigned i = 0; i < 3; ++i) {
+            if (!v[i].IsNumber()) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
+            out[i] = static_cast<float>(v[i].GetDouble());
+        }
+    }
+    std::uint32_t count(const Value& v, const char* key, std::uint32_t lo, std::uint32_t hi) const {
+        if (!v.IsUint() || v.GetUint() < lo || v.GetUint() > hi)
+            fail(std::string("\"") + key + "\" must be an integer in [" + std::to_string(lo) + ", " +
+                 std::to_string(hi) + "]");
+        return v.GetUint();
+    }
+    void only_keys(const Value& obj, const char* where, std::set<std::string> allowed) const {
+        for (auto it = obj.MemberBegin(); it != obj.MemberEnd(); ++it)
+            if (!allowed.count(it->name.GetString()))
+                fail(std::string("unknown key \"") + it->name.GetString() + "\" in " + where);
+    }
+};
+
+Card read_card(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FormatError(path.string() + ": cannot open scene card");
+    std::ostringstream text;
+    text << in.rdbuf();
+    Card card{path.string(), {}};
+    // Iterative parsing: a hostile card cannot exhaust the stack.
+    card.doc.Parse<rapidjson::kParseIterativeFlag>(text.str().c_str());
+    if (card.doc.HasParseError())
+        card.fail(std::string("not valid JSON: ") + rapidjson::GetParseError_En(card.doc.GetParseError()) +
+                  " at byte " + std::to_string(card.doc.GetErrorOffset()));
+    if (!card.doc.IsObject()) card.fail("a scene card must be a JSON object");
+    card.only_keys(card.doc, "the card", {"mesh", "shared_scene", "up", "camera", "lights", "photons", "bounces", "k", "comment"});
+    return card;
+}
+
+}  // namespace
+
+bool is_scene_card(const fs::path& input) {
+    std::string ext = input.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".json";
+}
+
+fs::path card_mesh_path(const fs::path& card_path) {
+    const Card card = read_card(card_path);
+    const Value& doc = card.doc;
+    if (!doc.HasMember("mesh") || !doc["mesh"].IsString()) card.fail("\"mesh\" (a path relative to the card) is required");
+    if (doc.HasMember("shared_scene")) {
+        if (!doc["shared_scene"].IsString()) card.fail("\"shared_scene\" must be a string");
+        if (const char* env = std::getenv("KDPM_SCENES"); env && *env) {
+            fs::path p = fs::path(env) / doc["shared_scene"].GetString();
+            std::error_code ec;
+            if (fs::is_regular_file(p, ec)) return p;
+        }
+    }
+    return card_path.parent_path() / doc["mesh"].GetString();
+}
+
+Scene load_scene_input(const fs::path& input) {
+    if (!is_scene_card(input)) {
+        Scene scene = import_mesh(input);
+        frame_camera(scene);
+        return scene;
+    }
+    const fs::path mesh = card_mesh_path(input);
+    const Card card = read_card(input);
+    const Value& doc = card.doc;
+    std::uint32_t up = 1;
+    if (doc.HasMember("up")) {
+        const Value& u = doc["up"];
+        const std::string s = u.IsString() ? u.GetString() : "";
+        if (s == "x" || s == "+x") up = 0;
+        else if (s == "y" || s == "+y") up = 1;
+        else if (s == "z" || s == "+z") up = 2;
+        else card.fail("\"up\" must be \"x\", \"y\" or \"z\"");
+    }
+    Scene scene = import_mesh(mesh);
+    scene.up_axis = up;
+    if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, 1u << 30);
+    if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, 1000);
+    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, 4096);
+    if (doc.HasMember("lights")) {
+        const Value& lights = doc["lights"];
+        if (!lights.IsArray()) card.fail("\"lights\" must be an array");
+        for (const Value& l : lights.GetArray()) {
+            if (!l.IsObject()) card.fail("each light must be an object");
+            card.only_keys(l, "a light", {"p0", "e1", "e2", "radiance", "comment"});
+            for (const char* key : {"p0", "e1", "e2", "radiance"})
+                if (!l.HasMember(key)) card.fail(std::string("a light needs \"") + key + "\"");
+            float p0[3], e1[3], e2[3], radiance[3];
+            card.vec3(l["p0"], "p0", p0);
+            card.vec3(l["e1"], "e1", e1);
+            card.vec3(l["e2"], "e2", e2);
+            card.vec3(l["radiance"], "radiance", radiance);
+            scene.lights.push_back(make_parallelogram_light(p0, e1, e2, radiance));
+        }
+    }
+    if (doc.HasMember("camera")) {
+        const Value& c = doc["camera"];
+        if (!c.IsObject()) card.fail("\"camera\" must be an object");
+        card.only_keys(c, "the camera", {"eye", "lookat", "up", "vfov", "width", "height", "comment"});
+        for (const char* key : {"eye", "lookat", "up", "vfov"})
+            if (!c.HasMember(key)) card.fail(std::string("the camera needs \"") + key + "\"");
+        CameraRecord& cam = scene.camera;
+        card.vec3(c["eye"], "eye", cam.eye);
+        card.vec3(c["lookat"], "lookat", cam.lookat);
+        card.vec3(c["up"], "up", cam.up);
+        if (!c["vfov"].IsNumber() || !(c["vfov"].GetDouble() > 0.0 && c["vfov"].GetDouble() < 180.0))
+            card.fail("\"vfov\" must be a number of degrees in (0, 180)");
+        cam.vfov_degrees = static_cast<float>(c["vfov"].GetDouble());
+        cam.width = c.HasMember("width") ? card.count(c["width"], "width", 1, 65536) : 512;
+        cam.height = c.HasMember("height") ? card.count(c["height"], "height", 1, 65536) : 512;
+        scene.has_camera = true;
+    } else {
+        frame_camera(scene);
+    }
+    return scene;
+}
+
+}  // namespace kdpm

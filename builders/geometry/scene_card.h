@@ -1,0 +1,29 @@
+#pragma once
+// Scene cards: a small JSON file next to (or pointing at) a mesh that adds what mesh formats do
+// not carry: camera, extra area lights, rendering defaults and the up axis.
+//
+// {
+//   "mesh": "cornell-box.obj",                     // relative to the card
+//   "shared_scene": "sponza/sponza.obj",           // optional: used under $KDPM_SCENES when set
+//   "up": "y",                                     // x, y or z (default y)
+//   "camera": { "eye": [0,1,3.9], "lookat": [0,1,0], "up": [0,1,0], "vfov": 40,
+//               "width": 512, "height": 512 },     // optional: framed from the bounds when absent
+//   "lights": [ { "p0": [..], "e1": [..], "e2": [..], "radiance": [..] } ],  // optional
+//   "photons": 262144, "bounces": 4, "k": 64       // optional
+// }
+#include <filesystem>
+
+#include "builders/geometry/scene.h"
+
+namespace kdpm {
+
+// True for inputs that are scene cards (*.json), false for meshes.
+bool is_scene_card(const std::filesystem::path& input);
+
+// The mesh a card names, resolved ($KDPM_SCENES first when the card has "shared_scene").
+std::filesystem::path card_mesh_path(const std::filesystem::path& card);
+
+// Card or bare mesh -> complete scene (camera always set). Throws FormatError with one line.
+Scene load_scene_input(const std::filesystem::path& input);
+
+}  // namespace kdpm

@@ -1,0 +1,37 @@
+#include "builders/photons/photon_map_writer.h"
+
+#include <string>
+#include <vector>
+
+#include "builders/photons/photon_tree_writer.h"
+
+namespace kdpm {
+
+PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOptions& options, Metadata metadata) {
+    BuiltPhotonTree global = build_photon_tree(set.hits, options, set.info.emitted_count, set.info.max_bounces);
+    std::vector<PhotonHit> caustic_hits;
+    for (const auto& h : set.hits)
+        if (h.flags & kPhotonCaustic) caustic_hits.push_back(h);
+    BuiltPhotonTree caustic = build_photon_tree(caustic_hits, options, set.info.emitted_count, set.info.max_bounces);
+
+    PhotonMapBuild out;
+    add_photon_tree_sections(out.writer, PhotonMapKind::global, global);
+    add_photon_tree_sections(out.writer, PhotonMapKind::caustic, caustic);
+    const bool balanced = options.builder == PhotonTreeBuilder::balanced;
+    metadata.parameters["builder"] = balanced ? "balanced" : "vvh";
+    metadata.parameters["leaf_size"] = std::to_string(options.leaf_size);
+    metadata.parameters["radius"] = options.query_radius > 0.0f ? std::to_string(options.query_radius) : "auto";
+    metadata.statistics["photons"] = global.info.photon_count;
+    metadata.statistics["caustic_photons"] = caustic.info.photon_count;
+    metadata.statistics["nodes"] = global.info.node_count;
+    metadata.statistics["leaves"] = global.info.leaf_count;
+    metadata.statistics["max_depth"] = global.info.max_depth;
+    metadata.statistics["query_radius"] = global.info.query_radius;
+    metadata.statistics["emitted"] = static_cast<double>(set.info.emitted_count);
+    out.writer.set_metadata(metadata);
+    out.global = global.info;
+    out.caustic = caustic.info;
+    return out;
+}
+
+}  // namespace kdpm

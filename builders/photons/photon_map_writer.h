@@ -1,0 +1,20 @@
+#pragma once
+// Photon hits -> the complete photon kd-tree file (.kdp): the global map over every stored photon
+// and the caustic map over the caustic ones, with their build parameters and statistics in the
+// metadata. Shared by kdpm-build-photons and kdpm-bench.
+#include "builders/photons/photon_hits_file.h"
+#include "builders/photons/photon_tree_builder.h"
+#include "formats/container_writer.h"
+
+namespace kdpm {
+
+struct PhotonMapBuild {
+    ContainerWriter writer{FileKind::photon_tree};  // write(path), or bytes() for tests
+    PhotonTreeInfo global{};
+    PhotonTreeInfo caustic{};
+};
+
+// `metadata` carries the tool and source; the builder, leaf size, radius and statistics are added.
+PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOptions& options, Metadata metadata);
+
+}  // namespace kdpm

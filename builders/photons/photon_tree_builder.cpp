@@ -1,0 +1,163 @@
+#include "builders/photons/photon_tree_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <tbb/parallel_invoke.h>
+
+#include "builders/photons/median_split.h"
+#include "builders/photons/query_radius.h"
+#include "builders/photons/vvh_split.h"
+
+namespace kdpm {
+namespace {
+
+using photon_build::Cell;
+using photon_build::Positions;
+using photon_build::SplitChoice;
+
+// Subtrees at least this big build their two children in parallel.
+constexpr std::uint32_t kParallelThreshold = 16384;
+
+struct Builder {
+    Positions pos;
+    std::uint32_t* idx;
+    PhotonTreeOptions options;
+
+    // Appends the subtree of idx[begin, end) to `out`; inner nodes' above-child indices are
+    // relative to the start of `out`.
+    void build(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::uint32_t depth,
+               std::vector<KdNode>& out) const {
+        std::uint32_t n = end - begin;
+        SplitChoice choice;
+        if (depth < kMaxPhotonTreeDepth) {
+            choice = options.builder == PhotonTreeBuilder::balanced
+                         ? photon_build::choose_median_split(pos, idx + begin, n, options.leaf_size)
+                         : photon_build::choose_vvh_split(pos, idx + begin, n, cell, options.query_radius,
+                                                          options.leaf_size);
+        }
+        if (choice.make_leaf) {
+            out.push_back(KdNode::leaf(begin, n));
+            return;
+        }
+        const float* c = pos.axis[choice.axis];
+        const float s = choice.position;
+        std::uint32_t* mid_it = std::stable_partition(idx + begin, idx + end, [&](std::uint32_t i) { return c[i] < s; });
+        std::uint32_t mid = static_cast<std::uint32_t>(mid_it - idx);
+        Cell below = cell, above = cell;
+        below.hi[choice.axis] = s;
+        above.lo[choice.axis] = s;
+
+        std::size_t self = out.size();
+        out.push_back(KdNode{});
+        if (n >= kParallelThreshold) {
+            std::vector<KdNode> lo_nodes, hi_nodes;
+            tbb::parallel_invoke([&] { build(begin, mid, below, depth + 1, lo_nodes); },
+                                 [&] { build(mid, end, above, depth + 1, hi_nodes); });
+            append(out, lo_nodes);
+            std::size_t above_index = out.size();
+            append(out, hi_nodes);
+            out[self] = KdNode::inner(choice.axis, s, static_cast<std::uint32_t>(above_index));
+        } else {
+            build(begin, mid, below, depth + 1, out);
+            std::size_t above_index = out.size();
+            build(mid, end, above, depth + 1, out);
+            out[self] = KdNode::inner(choice.axis, s, static_cast<std::uint32_t>(above_index));
+        }
+        if (out.size() > KdNode::kMaxIndex) throw std::invalid_argument("photon tree has too many nodes");
+    }
+
+    static void append(std::vector<KdNode>& out, const std::vector<KdNode>& sub) {
+        auto base = static_cast<std::uint32_t>(out.size());
+        for (KdNode n : sub) {
+            if (!n.is_leaf()) n = KdNode::inner(n.axis(), n.split(), n.above_child() + base);
+            out.push_back(n);
+        }
+    }
+};
+
+void collect_statistics(BuiltPhotonTree& t) {
+    struct Item {
+        std::uint32_t node, depth;
+    };
+    std::vector<Item> stack{{0, 0}};
+    while (!stack.empty()) {
+        Item it = stack.back();
+        stack.pop_back();
+        const KdNode& n = t.nodes[it.node];
+        t.info.max_depth = std::max(t.info.max_depth, it.depth);
+        if (n.is_leaf()) {
+            ++t.info.leaf_count;
+            t.info.max_leaf_size = std::max(t.info.max_leaf_size, n.count());
+        } else {
+            stack.push_back({it.node + 1, it.depth + 1});
+            stack.push_back({n.above_child(), it.depth + 1});
+        }
+    }
+}
+
+}  // namespace
+
+BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonTreeOptions& options_in,
+                                  std::uint64_t emitted_count, std::uint32_t max_bounces) {
+    if (hits.size() > KdNode::kMaxIndex) throw std::invalid_argument("too many photons for one tree");
+    const auto n = static_cast<std::uint32_t>(hits.size());
+    std::vector<float> axis[3];
+    for (auto& a : axis) a.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i)
+        for (int a = 0; a < 3; ++a) axis[a][i] = hits[i].position[a];
+    Positions pos{{axis[0].data(), axis[1].data(), axis[2].data()}};
+
+    BuiltPhotonTree t;
+    t.source.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) t.source[i] = i;
+    Cell root = photon_build::photon_bounds(pos, t.source.data(), n);
+
+    PhotonTreeOptions options = options_in;
+    options.leaf_size = std::max<std::uint32_t>(options.leaf_size, 1);
+    if (options.builder == PhotonTreeBuilder::vvh && !(options.query_radius > 0.0f)) {
+        options.query_radius = photon_build::estimate_query_radius(pos, n);
+        if (!(options.query_radius > 0.0f) || !std::isfinite(options.query_radius)) {
+            float diag = 0.0f;
+            for (int a = 0; a < 3; ++a) diag = std::max(diag, root.hi[a] - root.lo[a]);
+            options.query_radius = diag > 0.0f ? 1e-3f * diag : 1e-3f;
+        }
+    }
+
+    Builder builder{pos, t.source.data(), options};
+    builder.build(0, n, root, 0, t.nodes);
+
+    t.x.resize(n);
+    t.y.resize(n);
+    t.z.resize(n);
+    t.power.resize(n);
+    t.directions.resize(n);
+    t.flags.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const PhotonHit& h = hits[t.source[i]];
+        t.x[i] = h.position[0];
+        t.y[i] = h.position[1];
+        t.z[i] = h.position[2];
+        t.power[i] = encode_rgbe(h.power[0], h.power[1], h.power[2]);
+        t.directions[i] = {encode_octahedral(h.direction[0], h.direction[1], h.direction[2]),
+                           encode_octahedral(h.normal[0], h.normal[1], h.normal[2])};
+        t.flags[i] = h.flags;
+    }
+
+    auto& info = t.info;
+    for (int a = 0; a < 3; ++a) {
+        info.bounds_min[a] = root.lo[a];
+        info.bounds_max[a] = root.hi[a];
+    }
+    info.photon_count = n;
+    info.node_count = static_cast<std::uint32_t>(t.nodes.size());
+    info.builder = static_cast<std::uint32_t>(options.builder);
+    info.query_radius = options.builder == PhotonTreeBuilder::vvh ? options.query_radius : 0.0f;
+    info.max_bounces = max_bounces;
+    info.emitted_count = emitted_count;
+    collect_statistics(t);
+    return t;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,25 @@
+#pragma once
+// The voxel volume heuristic (Wald, Günther, Slusallek 2004, "Balancing considered harmful"):
+// a query of radius r touches a cell with a probability proportional to the volume of the cell
+// grown by r on every side, so a split costs
+//   C_traverse + sum over children of  V_r(child) / V_r(cell) * N_child * C_photon
+// and a node stays a leaf (a bucket of photons) when that is not cheaper than N * C_photon.
+// Candidates: binned planes inside the photons' bounds, plus planes that cut empty space off
+// the cell on either side.
+#include "builders/photons/split_choice.h"
+
+namespace kdpm::photon_build {
+
+struct VvhCosts {
+    // Measured on the kNN kernel (k = 32, Sponza's primary hits): an inner node step with its
+    // stack push and pop costs several photon distance tests; 6 gave the fastest queries.
+    float traverse = 6.0f;
+    float photon = 1.0f;    // one photon distance test
+};
+
+// Leaf when n <= 1, or when n <= max_leaf_size and no split is cheaper; above max_leaf_size
+// the cheapest split is taken anyway (leaf only when all photons coincide).
+SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
+                             float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});
+
+}  // namespace kdpm::photon_build

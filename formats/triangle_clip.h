@@ -1,0 +1,196 @@
+#pragma once
+// Triangle against axis-aligned box: the bounds of their intersection (Sutherland–Hodgman on the
+// six box planes). The SAH builder uses it for perfect splits, the validator for leaf coverage;
+// sharing it keeps "the triangle overlaps this cell" the same question for both.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "formats/geometry_layout.h"
+
+namespace kdpm {
+
+struct AxisBox {
+    float lo[3];
+    float hi[3];
+};
+
+// A triangle the tree can hold: finite coordinates and non-zero area (in float arithmetic).
+inline bool triangle_is_usable(const TriangleRecord& t) {
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(t.v0[i]) || !std::isfinite(t.e1[i]) || !std::isfinite(t.e2[i])) return false;
+    const float cx = t.e1[1] * t.e2[2] - t.e1[2] * t.e2[1];
+    const float cy = t.e1[2] * t.e2[0] - t.e1[0] * t.e2[2];
+    const float cz = t.e1[0] * t.e2[1] - t.e1[1] * t.e2[0];
+    return cx != 0.0f || cy != 0.0f || cz != 0.0f;
+}
+
+// The three vertices of a stored triangle, in float (for framing and display only: v0 + e1
+// rounds). The tree uses the exact double form below.
+inline void triangle_vertices(const TriangleRecord& t, float (&v)[3][3]) {
+    for (int i = 0; i < 3; ++i) {
+        v[0][i] = t.v0[i];
+        v[1][i] = t.v0[i] + t.e1[i];
+        v[2][i] = t.v0[i] + t.e2[i];
+    }
+}
+
+// The exact vertices of the triangle the intersection test sees (v0 + e1 is exact in double).
+inline void triangle_vertices(const TriangleRecord& t, double (&v)[3][3]) {
+    for (int i = 0; i < 3; ++i) {
+        v[0][i] = t.v0[i];
+        v[1][i] = static_cast<double>(t.v0[i]) + t.e1[i];
+        v[2][i] = static_cast<double>(t.v0[i]) + t.e2[i];
+    }
+}
+
+// Float bounds that contain the double interval [lo, hi]: rounded outward.
+inline float round_down(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+}
+inline float round_up(double x) {
+    float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+}
+
+// Rounding the bounds of a triangle to float. To nearest by default, so that triangles sharing
+// a vertex share its bound exactly (outward rounding would scatter split candidates one ulp
+// apart and breed needless sliver cells); half an ulp there only touches a sliver along an
+// edge. But on an axis where the triangle is nearly flat (it spans fewer than ~1000 ulps), half
+// an ulp is a sizeable part of the triangle, so there the bounds are rounded outward.
+struct BoundRounding {
+    bool outward[3];
+};
+
+// The spacing of floats around x (within a factor of 2: the power of two of its exponent times
+// 2^-23), by bit manipulation: nextafter is a library call and this runs for every clip.
+inline double float_spacing(double x) {
+    const float f = std::fabs(static_cast<float>(x));
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    bits &= 0x7f800000u;
+    float power;
+    std::memcpy(&power, &bits, sizeof power);
+    return std::max(static_cast<double>(power) * 0x1p-23, 1.4e-45);
+}
+
+inline BoundRounding bound_rounding(const double (&v)[3][3]) {
+    BoundRounding r;
+    for (int a = 0; a < 3; ++a) {
+        const double lo = std::min(v[0][a], std::min(v[1][a], v[2][a]));
+        const double hi = std::max(v[0][a], std::max(v[1][a], v[2][a]));
+        r.outward[a] = hi - lo < 1024.0 * float_spacing(std::max(std::fabs(lo), std::fabs(hi)));
+    }
+    return r;
+}
+
+// `slack` bounds the error of x; outward rounding also when it is not far below the spacing.
+inline float bound_down(double x, double slack, bool outward) {
+    return outward || slack >= 0.25 * float_spacing(x) ? round_down(x - slack) : static_cast<float>(x);
+}
+inline float bound_up(double x, double slack, bool outward) {
+    return outward || slack >= 0.25 * float_spacing(x) ? round_up(x + slack) : static_cast<float>(x);
+}
+
+// Float bounds of a usable triangle (rounded as above).
+inline AxisBox triangle_bounds(const TriangleRecord& t) {
+    double v[3][3];
+    triangle_vertices(t, v);
+    const BoundRounding r = bound_rounding(v);
+    AxisBox b;
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] = bound_down(std::min(v[0][a], std::min(v[1][a], v[2][a])), 0.0, r.outward[a]);
+        b.hi[a] = bound_up(std::max(v[0][a], std::max(v[1][a], v[2][a])), 0.0, r.outward[a]);
+    }
+    return b;
+}
+
+// Conservative bounds of (triangle ∩ box), clamped to the box; false when they do not meet.
+// Points on a box face count as inside, so a triangle touching a cell "meets" it.
+//
+// Clipping a nearly flat triangle against a plane almost parallel to it is ill-conditioned:
+// in float the cut points can move by a large part of an edge and the bounds come out too
+// small (then the tree misses the triangle in a cell it crosses). So the polygon is clipped in
+// double from the exact vertices, a bound on the rounding error of every cut point is carried
+// along (large only for ill-conditioned cuts), and where it matters the result is widened by
+// it and rounded outward (see BoundRounding).
+inline bool clip_triangle_to_box(const double (&v)[3][3], const AxisBox& box, AxisBox& out) {
+    double lo[3], hi[3];
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
+        hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
+        if (lo[a] > box.hi[a] || hi[a] < box.lo[a]) return false;
+        inside = inside && lo[a] >= box.lo[a] && hi[a] <= box.hi[a];
+    }
+    const BoundRounding rounding = bound_rounding(v);
+    if (inside) {
+        for (int a = 0; a < 3; ++a) {
+            out.lo[a] = std::max(bound_down(lo[a], 0.0, rounding.outward[a]), box.lo[a]);
+            out.hi[a] = std::min(bound_up(hi[a], 0.0, rounding.outward[a]), box.hi[a]);
+        }
+        return true;
+    }
+    constexpr double kRound = 4.0 * 2.220446049250313e-16;  // a few double ulps per operation
+    double slack[3] = {0.0, 0.0, 0.0};                        // error bound of the points, per axis
+    // Each plane adds at most one vertex: 3 + 6.
+    double buf[2][9][3];
+    int n = 3;
+    for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 3; ++a) buf[0][i][a] = v[i][a];
+    int cur = 0;
+    for (int a = 0; a < 3 && n > 0; ++a) {
+        for (int side = 0; side < 2 && n > 0; ++side) {
+            const double plane = side == 0 ? box.lo[a] : box.hi[a];
+            if (side == 0 ? lo[a] >= plane : hi[a] <= plane) continue;  // nothing to cut
+            const double (*in)[3] = buf[cur];
+            double (*res)[3] = buf[cur ^ 1];
+            double new_slack[3] = {slack[0], slack[1], slack[2]};
+            int m = 0;
+            for (int i = 0; i < n; ++i) {
+                const double* p = in[i];
+                const double* q = in[(i + 1) % n];
+                const bool p_in = side == 0 ? p[a] >= plane : p[a] <= plane;
+                const bool q_in = side == 0 ? q[a] >= plane : q[a] <= plane;
+                if (p_in && m < 9) {
+                    for (int k = 0; k < 3; ++k) res[m][k] = p[k];
+                    ++m;
+                }
+                if (p_in != q_in && m < 9) {
+                    const double d = q[a] - p[a];
+                    const double t = (plane - p[a]) / d;
+                    const double t_err = (kRound * (std::fabs(plane) + std::fabs(p[a])) + 2.0 * slack[a]) / std::fabs(d);
+                    for (int k = 0; k < 3; ++k) {
+                        res[m][k] = p[k] + t * (q[k] - p[k]);
+                        if (k != a) {
+                            const double e = slack[k] + t_err * std::fabs(q[k] - p[k]) +
+                                             kRound * (std::fabs(p[k]) + std::fabs(q[k]));
+                            new_slack[k] = std::max(new_slack[k], e);
+                        }
+                    }
+                    res[m][a] = plane;
+                    ++m;
+                }
+            }
+            for (int k = 0; k < 3; ++k) slack[k] = new_slack[k];
+            n = m;
+            cur ^= 1;
+        }
+    }
+    if (n == 0) return false;
+    for (int a = 0; a < 3; ++a) {
+        double l = buf[cur][0][a], h = buf[cur][0][a];
+        for (int i = 1; i < n; ++i) {
+            l = std::min(l, buf[cur][i][a]);
+            h = std::max(h, buf[cur][i][a]);
+        }
+        out.lo[a] = std::max(bound_down(l, slack[a], rounding.outward[a]), box.lo[a]);
+        out.hi[a] = std::min(bound_up(h, slack[a], rounding.outward[a]), box.hi[a]);
+        if (out.lo[a] > out.hi[a]) return false;
+    }
+    return true;
+}
+
+}  // namespace kdpm

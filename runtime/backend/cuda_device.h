@@ -1,0 +1,17 @@
+#pragma once
+// Device detection. Compiled against the CUDA runtime only when the build has the CUDA backend
+// (KDPM_HAVE_CUDA); otherwise a stub reports that there is none. Safe to call without a driver.
+#include <string>
+
+namespace kdpm {
+
+struct CudaDeviceStatus {
+    int device_count = 0;
+    std::string device_name;  // of device 0, when there is one
+    std::string reason;       // why there is no usable device (empty when device_count > 0)
+};
+
+CudaDeviceStatus cuda_device_status();
+bool cuda_backend_built();
+
+}  // namespace kdpm

@@ -1,0 +1,46 @@
+#include "runtime/geometry/geometry_file.h"
+
+#include "formats/section_ids.h"
+#include "formats/tree_validation.h"
+#include "formats/validate_kinds.h"
+
+namespace kdpm {
+
+GeometryFile GeometryFile::open(const std::filesystem::path& path, bool verify_checksums) {
+    return GeometryFile(ContainerReader::open(path, FileKind::geometry), verify_checksums);
+}
+
+GeometryFile GeometryFile::from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                                      bool verify_checksums) {
+    return GeometryFile(ContainerReader::from_bytes(bytes, name, FileKind::geometry), verify_checksums);
+}
+
+GeometryFile::GeometryFile(ContainerReader reader, bool verify_checksums) : reader_(std::move(reader)) {
+    if (verify_checksums) reader_.verify();
+    // The structural validator is linear in the file size and checks every index the kernels
+    // follow, so after it the traversal cannot leave the arrays or overflow its stack.
+    validate_geometry_file(reader_, ValidationOptions{});
+
+    const auto nodes = reader_.section<KdNode>(section::geo_nodes);
+    const auto leaf = reader_.section<std::uint32_t>(section::geo_leaf_indices);
+    const auto tris = reader_.section<TriangleRecord>(section::geo_triangles);
+    const auto mats = reader_.section<MaterialRecord>(section::geo_materials);
+    const auto lights = reader_.section<AreaLightRecord>(section::geo_lights);
+    const auto normals = reader_.optional_section<TriangleNormals>(section::geo_normals);
+
+    view_.nodes = nodes.data();
+    view_.node_count = static_cast<std::uint32_t>(nodes.size());
+    view_.leaf_indices = leaf.data();
+    view_.leaf_index_count = static_cast<std::uint32_t>(leaf.size());
+    view_.triangles = tris.data();
+    view_.triangle_count = static_cast<std::uint32_t>(tris.size());
+    view_.normals = normals && !normals->empty() ? normals->data() : nullptr;
+    view_.materials = mats.data();
+    view_.material_count = static_cast<std::uint32_t>(mats.size());
+    view_.lights = lights.data();
+    view_.light_count = static_cast<std::uint32_t>(lights.size());
+    view_.info = reader_.record<GeometryInfo>(section::geo_info);
+    camera_ = reader_.record<CameraRecord>(section::geo_camera);
+}
+
+}  // namespace kdpm

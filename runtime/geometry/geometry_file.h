@@ -1,0 +1,41 @@
+#pragma once
+// A .kdg file opened for rendering: memory-mapped (no copy), structurally checked once on open
+// (required sections, record sizes, every index in range, tree shape and depth), then exposed
+// as a GeometryView that kernels can use directly.
+#include <filesystem>
+#include <span>
+#include <string>
+
+#include "formats/container_reader.h"
+#include "formats/geometry_layout.h"
+#include "runtime/geometry/geometry_view.h"
+
+namespace kdpm {
+
+class GeometryFile {
+public:
+    // Throws FormatError with a one-line reason for a missing, corrupt or foreign file.
+    // verify_checksums also hashes every section (slower; kdpm-validate always does).
+    static GeometryFile open(const std::filesystem::path& path, bool verify_checksums = false);
+    // Over a copy of the caller's bytes (tests).
+    static GeometryFile from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                                   bool verify_checksums = false);
+
+    const GeometryView& view() const { return view_; }
+    const GeometryInfo& info() const { return view_.info; }
+    const CameraRecord& camera() const { return camera_; }
+    Metadata metadata() const { return reader_.metadata(); }
+    const ContainerReader& reader() const { return reader_; }
+
+    std::span<const TriangleRecord> triangles() const { return {view_.triangles, view_.triangle_count}; }
+    std::span<const MaterialRecord> materials() const { return {view_.materials, view_.material_count}; }
+    std::span<const AreaLightRecord> lights() const { return {view_.lights, view_.light_count}; }
+
+private:
+    explicit GeometryFile(ContainerReader reader, bool verify_checksums);
+    ContainerReader reader_;
+    GeometryView view_{};
+    CameraRecord camera_{};
+};
+
+}  // namespace kdpm

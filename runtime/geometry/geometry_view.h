@@ -1,0 +1,30 @@
+#pragma once
+// Everything a kernel needs from a .kdg file, as plain pointers and counts. The arrays live in
+// the memory-mapped file on the CPU (GeometryFile) or in device memory after one upload each.
+#include <cstdint>
+
+#include "formats/geometry_layout.h"
+#include "formats/kd_node.h"
+
+namespace kdpm {
+
+// The traversal stack holds one entry per tree level; builders and the validator keep trees
+// at most this deep.
+inline constexpr std::uint32_t kMaxKdDepth = kMaxKdTreeDepth;
+
+struct GeometryView {
+    const KdNode* nodes = nullptr;
+    std::uint32_t node_count = 0;
+    const std::uint32_t* leaf_indices = nullptr;
+    std::uint32_t leaf_index_count = 0;
+    const TriangleRecord* triangles = nullptr;
+    std::uint32_t triangle_count = 0;
+    const TriangleNormals* normals = nullptr;  // nullptr when the file has no shading normals
+    const MaterialRecord* materials = nullptr;
+    std::uint32_t material_count = 0;
+    const AreaLightRecord* lights = nullptr;
+    std::uint32_t light_count = 0;
+    GeometryInfo info{};  // a copy: bounds, counts and scene defaults
+};
+
+}  // namespace kdpm

@@ -1,0 +1,154 @@
+#pragma once
+// Stack-based front-to-back traversal of the SAH geometry kd-tree: closest hit and any-hit
+// (occlusion). The ray is first clipped to the scene bounds; inner nodes are visited near
+// child first, the far child is pushed only when the segment crosses the split plane, and the
+// walk stops as soon as a hit lies within the current leaf's segment.
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "formats/host_device.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/ray.h"
+#include "runtime/geometry/triangle_intersect.h"
+
+namespace kdpm {
+
+namespace kd_detail {
+
+struct StackEntry {
+    std::uint32_t node;
+    float tmin, tmax;
+};
+
+KDPM_HD KDPM_INLINE float min_f(float a, float b) { return a < b ? a : b; }
+KDPM_HD KDPM_INLINE float max_f(float a, float b) { return a > b ? a : b; }
+
+// Clips [t0, t1] to the slab intersection of the scene bounds. NaN slab values (origin on a
+// slab plane with a zero direction component) leave the interval unchanged.
+KDPM_HD KDPM_INLINE bool clip_to_bounds(const GeometryInfo& info, const glm::vec3& origin,
+                                        const glm::vec3& inv_dir, float& t0, float& t1) {
+    for (int a = 0; a < 3; ++a) {
+        float tn = (info.bounds_min[a] - origin[a]) * inv_dir[a];
+        float tf = (info.bounds_max[a] - origin[a]) * inv_dir[a];
+        if (tn > tf) {
+            float s = tn;
+            tn = tf;
+            tf = s;
+        }
+        if (tn > t0) t0 = tn;
+        if (tf < t1) t1 = tf;
+    }
+    return t0 <= t1;
+}
+
+// Walks the tree; for each leaf calls visit(first, count, t_leaf_max), which returns true to
+// stop the walk; visit.limit() is the farthest t still of interest. Shared by the closest-hit
+// and any-hit queries.
+template <class LeafVisitor>
+KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor& visit) {
+    if (g.node_count == 0) return;
+    const glm::vec3 inv_dir(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z);
+    float tmin = ray.tmin, tmax = ray.tmax;
+    if (!clip_to_bounds(g.info, ray.origin, inv_dir, tmin, tmax)) return;
+
+    StackEntry stack[kMaxKdDepth];
+    std::uint32_t sp = 0;
+    std::uint32_t node = 0;
+    for (;;) {
+        KdNode n = g.nodes[node];
+        while (!n.is_leaf()) {
+            const int axis = n.axis();
+            const float split = n.split();
+            const float o = ray.origin[axis];
+            const float tplane = (split - o) * inv_dir[axis];
+            const bool below_first = o < split || (o == split && ray.direction[axis] <= 0.0f);
+            const std::uint32_t below = node + 1, above = n.above_child();
+            const std::uint32_t first = below_first ? below : above;
+            const std::uint32_t second = below_first ? above : below;
+            // NaN (ray inside the plane) and planes behind or beyond the segment: near side only.
+            if (!(tplane <= tmax) || tplane <= 0.0f) {
+                node = first;
+            } else if (tplane < tmin) {
+                node = second;
+            } else {
+                if (sp < kMaxKdDepth) stack[sp++] = StackEntry{second, tplane, tmax};
+                node = first;
+                tmax = tplane;
+            }
+            n = g.nodes[node];
+        }
+        if (visit(n.first(), n.count(), tmax)) return;
+        if (sp == 0) return;
+        const StackEntry e = stack[--sp];
+        // Entries come off nearest first: once one starts beyond the best hit, all do.
+        if (e.tmin > visit.limit()) return;
+        node = e.node;
+        tmin = e.tmin;
+        tmax = e.tmax;
+    }
+}
+
+struct ClosestVisitor {
+    const GeometryView& g;
+    const Ray& ray;
+    Hit hit;
+    KDPM_HD float limit() const { return hit.t; }
+    KDPM_HD bool operator()(std::uint32_t first, std::uint32_t count, float leaf_tmax) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const std::uint32_t tri = g.leaf_indices[first + i];
+            float t, u, v;
+            if (intersect_triangle(g.triangles[tri], ray.origin, ray.direction, ray.tmin, hit.t, t, u, v))
+                hit = Hit{t, tri, u, v};
+        }
+        // A hit inside this leaf's segment cannot be beaten by leaves further along the ray.
+        return hit.found() && hit.t <= leaf_tmax;
+    }
+};
+
+struct AnyVisitor {
+    const GeometryView& g;
+    const Ray& ray;
+    bool occluded;
+    KDPM_HD float limit() const { return ray.tmax; }
+    KDPM_HD bool operator()(std::uint32_t first, std::uint32_t count, float) {
+        for (std::uint32_t i = 0; i < count; ++i) {
+            float t, u, v;
+            if (intersect_triangle(g.triangles[g.leaf_indices[first + i]], ray.origin, ray.direction, ray.tmin,
+                                   ray.tmax, t, u, v)) {
+                occluded = true;
+                return true;
+            }
+        }
+        return false;
+    }
+};
+
+}  // namespace kd_detail
+
+// The closest hit with t in (ray.tmin, ray.tmax), or a Hit with triangle == kNoHit.
+KDPM_HD KDPM_INLINE Hit closest_hit(const GeometryView& g, const Ray& ray) {
+    kd_detail::ClosestVisitor visitor{g, ray, miss(ray.tmax)};
+    kd_detail::walk(g, ray, visitor);
+    return visitor.hit;
+}
+
+// True when any triangle is hit with t in (ray.tmin, ray.tmax): shadow rays, visibility.
+KDPM_HD KDPM_INLINE bool occluded(const GeometryView& g, const Ray& ray) {
+    kd_detail::AnyVisitor visitor{g, ray, false};
+    kd_detail::walk(g, ray, visitor);
+    return visitor.occluded;
+}
+
+// Reference: every triangle tested, no tree. For tests and debugging.
+KDPM_HD KDPM_INLINE Hit closest_hit_brute_force(const GeometryView& g, const Ray& ray) {
+    Hit hit = miss(ray.tmax);
+    for (std::uint32_t i = 0; i < g.triangle_count; ++i) {
+        float t, u, v;
+        if (intersect_triangle(g.triangles[i], ray.origin, ray.direction, ray.tmin, hit.t, t, u, v))
+            hit = Hit{t, i, u, v};
+    }
+    return hit;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,161 @@
+#pragma once
+// The k-nearest photon search (k <= kMaxGatherK): a stack-based kd-tree walk that visits the
+// near child first, pushes the far child with its squared split-plane distance, and keeps the
+// k best photons in a fixed-size max-heap whose top shrinks the search radius.
+//
+// Metric: squared distance of an offset (dx, dy, dz) = photon - query; it must be at least the
+// Euclidean squared distance (so the split-plane test stays a valid lower bound): Euclidean,
+// or DiscMetric, which flattens the search sphere toward a surface against light leaks.
+// Accept: photon index -> bool, a filter applied to photons inside the current radius.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "formats/host_device.h"
+#include "runtime/photons/photon_map_view.h"
+
+namespace kdpm {
+
+inline constexpr std::uint32_t kMaxGatherK = 256;
+
+struct EuclideanMetric {
+    KDPM_HD float operator()(float dx, float dy, float dz) const { return dx * dx + dy * dy + dz * dz; }
+};
+
+// d^2 + flatten * (d . n)^2: an ellipsoid whose axis along the unit normal n is shorter by
+// sqrt(1 + flatten), so photons on nearby parallel surfaces (the other side of a wall) count less.
+struct DiscMetric {
+    glm::vec3 normal;
+    float flatten;
+    KDPM_HD float operator()(float dx, float dy, float dz) const {
+        float dn = dx * normal.x + dy * normal.y + dz * normal.z;
+        return dx * dx + dy * dy + dz * dz + flatten * dn * dn;
+    }
+};
+
+struct AcceptAll {
+    KDPM_HD bool operator()(std::uint32_t) const { return true; }
+};
+
+// Scratch for one search: a max-heap on d2 (d2[0] is the farthest of those kept).
+struct KnnHeap {
+    float d2[kMaxGatherK];
+    std::uint32_t index[kMaxGatherK];
+};
+
+namespace knn_detail {
+
+KDPM_HD KDPM_INLINE void sift_down(float* d2, std::uint32_t* index, std::uint32_t n, float key, std::uint32_t item) {
+    std::uint32_t i = 0;
+    for (;;) {
+        std::uint32_t c = 2 * i + 1;
+        if (c >= n) break;
+        if (c + 1 < n && d2[c + 1] > d2[c]) ++c;
+        if (!(d2[c] > key)) break;
+        d2[i] = d2[c];
+        index[i] = index[c];
+        i = c;
+    }
+    d2[i] = key;
+    index[i] = item;
+}
+
+KDPM_HD KDPM_INLINE void sift_up(float* d2, std::uint32_t* index, std::uint32_t i, float key, std::uint32_t item) {
+    while (i > 0) {
+        std::uint32_t parent = (i - 1) / 2;
+        if (!(d2[parent] < key)) break;
+        d2[i] = d2[parent];
+        index[i] = index[parent];
+        i = parent;
+    }
+    d2[i] = key;
+    index[i] = item;
+}
+
+}  // namespace knn_detail
+
+// Finds up to k photons (k clamped to 1..kMaxGatherK) with metric distance^2 < max_radius^2
+// (no limit when max_radius <= 0). Returns how many; they are in heap.d2/heap.index[0..count),
+// a max-heap (heap.d2[0] the largest). Writes nothing else; no allocation.
+//
+// A far child is pushed with the squared distance from q to its cell, from the cell's per-axis
+// offsets kept incrementally (Arya & Mount: only the split axis changes from the parent's).
+// That bound prunes more than the split-plane distance alone.
+template <class Metric, class Accept>
+KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uint32_t k, float max_radius,
+                                 const Metric& metric, const Accept& accept, KnnHeap& heap) {
+    if (map.node_count == 0) return 0;
+    k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    float max_d2 = max_radius > 0.0f ? max_radius * max_radius : 3.402823466e38f;
+    std::uint32_t found = 0;
+    float* hd2 = heap.d2;
+    std::uint32_t* hidx = heap.index;
+
+    struct Entry {
+        std::uint32_t node;
+        float d2;        // squared distance from q to the cell
+        float off[3];    // per-axis offset from q to the cell (0 inside the slab)
+    };
+    Entry stack[kMaxPhotonTreeDepth + 1];
+    std::uint32_t top = 0;
+    std::uint32_t node = 0;
+    float off[3] = {0.0f, 0.0f, 0.0f};
+    const float qc[3] = {q.x, q.y, q.z};
+    for (;;) {
+        KdNode n = map.nodes[node];
+        while (!n.is_leaf()) {
+            const int axis = n.axis();
+            const float d = qc[axis] - n.split();
+            const std::uint32_t above = n.above_child();
+            const std::uint32_t near_child = d < 0.0f ? node + 1 : above;
+            const std::uint32_t far_child = d < 0.0f ? above : node + 1;
+            // Summed afresh in the photon distance's order (no cancellation), so rounding never
+            // makes the bound exceed the distance of a photon in that cell.
+            float far_off[3] = {off[0], off[1], off[2]};
+            far_off[axis] = d;
+            const float far_d2 = far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+            if (far_d2 < max_d2 && top <= kMaxPhotonTreeDepth) {
+                Entry& e = stack[top++];
+                e.node = far_child;
+                e.d2 = far_d2;
+                e.off[0] = far_off[0];
+                e.off[1] = far_off[1];
+                e.off[2] = far_off[2];
+            }
+            node = near_child;
+            n = map.nodes[node];
+        }
+        const std::uint32_t first = n.first(), end = first + n.count();
+        for (std::uint32_t p = first; p < end; ++p) {
+            const float d2 = metric(map.x[p] - q.x, map.y[p] - q.y, map.z[p] - q.z);
+            if (d2 < max_d2 && accept(p)) {
+                if (found < k) {
+                    knn_detail::sift_up(hd2, hidx, found, d2, p);
+                    ++found;
+                    if (found == k) max_d2 = hd2[0];
+                } else {
+                    knn_detail::sift_down(hd2, hidx, k, d2, p);
+                    max_d2 = hd2[0];
+                }
+            }
+        }
+        // Next subtree whose cell is still closer than the current radius.
+        for (;;) {
+            if (top == 0) return found;
+            --top;
+            if (stack[top].d2 < max_d2) break;
+        }
+        const Entry& e = stack[top];
+        node = e.node;
+        off[0] = e.off[0];
+        off[1] = e.off[1];
+        off[2] = e.off[2];
+    }
+}
+
+KDPM_HD inline std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uint32_t k, float max_radius,
+                                        KnnHeap& heap) {
+    return knn_search(map, q, k, max_radius, EuclideanMetric{}, AcceptAll{}, heap);
+}
+
+}  // namespace kdpm

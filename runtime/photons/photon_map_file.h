@@ -1,0 +1,33 @@
+#pragma once
+// A photon kd-tree file (.kdp) mapped read-only and checked (container, checksums, tree
+// invariants), exposing each photon map as a PhotonMapView over the mapping.
+#include <filesystem>
+
+#include "formats/container_reader.h"
+#include "formats/metadata.h"
+#include "formats/photon_layout.h"
+#include "runtime/photons/photon_map_view.h"
+
+namespace kdpm {
+
+class PhotonMapFile {
+public:
+    // Throws FormatError with a one-line reason (missing, wrong kind or version, corrupt).
+    static PhotonMapFile open(const std::filesystem::path& path);
+    // Over a copy of the bytes (tests).
+    static PhotonMapFile from_bytes(std::span<const std::uint8_t> bytes, std::string name);
+
+    bool has_map(PhotonMapKind map) const;
+    // An empty view (node_count 0) when the map is absent.
+    PhotonMapView view(PhotonMapKind map = PhotonMapKind::global) const;
+    // A zeroed info when the map is absent.
+    PhotonTreeInfo info(PhotonMapKind map = PhotonMapKind::global) const;
+    Metadata metadata() const { return reader_.metadata(); }
+    const ContainerReader& container() const { return reader_; }
+
+private:
+    explicit PhotonMapFile(ContainerReader reader);
+    ContainerReader reader_;
+};
+
+}  // namespace kdpm

@@ -1,0 +1,24 @@
+#pragma once
+// A photon map as the gather kernels read it: the kd-tree nodes and the photons in leaf order
+// as plain arrays (a mapped .kdp on the CPU, device copies on the GPU).
+#include <cstdint>
+
+#include "formats/kd_node.h"
+#include "formats/photon_layout.h"
+
+namespace kdpm {
+
+struct PhotonMapView {
+    const KdNode* nodes = nullptr;
+    std::uint32_t node_count = 0;  // 0: an empty map (every search finds nothing)
+    std::uint32_t photon_count = 0;
+    const float* x = nullptr;
+    const float* y = nullptr;
+    const float* z = nullptr;
+    const std::uint32_t* power = nullptr;                // RGBE (decode_rgbe)
+    const PackedPhotonDirections* directions = nullptr;  // octahedral (decode_octahedral)
+    const std::uint32_t* flags = nullptr;                // kPhotonCaustic, bounce
+    std::uint64_t emitted_count = 0;                     // photon paths emitted by the shooter
+};
+
+}  // namespace kdpm

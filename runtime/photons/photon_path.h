@@ -1,0 +1,132 @@
+#pragma once
+// One photon path, the shooting kernel (CPU and GPU): emitted from a light chosen by power, at a
+// uniform point, in a cosine-distributed direction about the light normal; traced through the
+// geometry kd-tree; stored at every diffuse hit; continued by the material (diffuse: cosine
+// bounce; mirror: reflection; glass: Fresnel reflection or refraction) with Russian roulette on
+// the reflectance, for at most max_bounces bounces. All randomness is counter_random(seed,
+// path, bounce, dimension), so the path is a pure function of its index.
+#include <cstdint>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "formats/geometry_layout.h"
+#include "formats/host_device.h"
+#include "formats/photon_layout.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/surface_normal.h"
+#include "runtime/photons/counter_random.h"
+#include "runtime/photons/light_table.h"
+#include "runtime/photons/photon_sampling.h"
+
+namespace kdpm {
+
+struct ShootSettings {
+    std::uint64_t emitted_count = 0;  // N: every path starts with (light power) / (N p(light))
+    std::uint32_t max_bounces = 4;    // stored hits have bounce 0..max_bounces
+    std::uint32_t seed = 0;
+    float ray_offset = 1e-4f;         // origin offset off a surface (scene units)
+};
+
+struct PhotonPathResult {
+    std::uint32_t stored = 0;  // hits written to out[0..stored)
+    std::uint32_t rays = 0;    // closest-hit queries traced
+};
+
+namespace photon_path_detail {
+
+KDPM_HD KDPM_INLINE float max3(const glm::vec3& v) { return v.x > v.y ? (v.x > v.z ? v.x : v.z) : (v.y > v.z ? v.y : v.z); }
+
+KDPM_HD KDPM_INLINE void put3(float (&dst)[3], const glm::vec3& v) {
+    dst[0] = v.x;
+    dst[1] = v.y;
+    dst[2] = v.z;
+}
+
+// Russian roulette on a reflectance: survive with probability max channel, then rescale the
+// power so its expectation is power * reflectance. False when the path ends.
+KDPM_HD KDPM_INLINE bool roulette(glm::vec3& power, const glm::vec3& reflectance, float u) {
+    float q = max3(reflectance);
+    q = q > 1.0f ? 1.0f : q;
+    if (!(q > 0.0f) || u >= q) return false;
+    power *= reflectance / q;
+    return true;
+}
+
+}  // namespace photon_path_detail
+
+// Traces path `path`; `out` has room for max_bounces + 1 hits.
+KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const LightTable& lights,
+                                                  const ShootSettings& s, std::uint64_t path, PhotonHit* out) {
+    using namespace photon_path_detail;
+    PhotonPathResult result;
+    if (lights.count == 0 || !(lights.total_power > 0.0f) || s.emitted_count == 0) return result;
+
+    // Emission (bounce stream 0, dimensions 0..4).
+    auto rnd = [&](std::uint32_t stream, std::uint32_t dim) { return counter_random(s.seed, path, stream, dim); };
+    const AreaLightRecord& light = lights.lights[pick_light(lights, rnd(0, 0))];
+    const glm::vec3 p0 = to_vec3(light.p0), e1 = to_vec3(light.e1), e2 = to_vec3(light.e2);
+    const glm::vec3 light_normal = glm::normalize(glm::cross(e1, e2));
+    const float u1 = rnd(0, 1), u2 = rnd(0, 2);
+    glm::vec3 origin = light.shape == static_cast<std::uint32_t>(LightShape::triangle)
+                           ? triangle_point(p0, e1, e2, u1, u2)
+                           : p0 + u1 * e1 + u2 * e2;
+    glm::vec3 direction = cosine_direction(light_normal, rnd(0, 3), rnd(0, 4));
+    origin += s.ray_offset * light_normal;
+    // Flux pi A L of this light over the probability of choosing it, shared by N paths.
+    const float choose = light.power / lights.total_power;
+    glm::vec3 power = (kPhotonPi * light.area / (choose * static_cast<float>(s.emitted_count))) * to_vec3(light.radiance);
+
+    bool specular_only = true;
+    for (std::uint32_t bounce = 0;; ++bounce) {
+        const Hit hit = closest_hit(g, Ray{origin, 0.0f, direction, 3.402823466e38f});
+        ++result.rays;
+        if (!hit.found()) break;
+        const TriangleRecord& tri = g.triangles[hit.triangle];
+        const glm::vec3 p = surface_point(tri, hit.u, hit.v);
+        const glm::vec3 ng = geometric_normal(tri);
+        const bool front = glm::dot(direction, ng) < 0.0f;
+        const glm::vec3 n = front ? ng : -ng;  // the side the photon arrived from
+        const MaterialRecord& m = g.materials[tri.material < g.material_count ? tri.material : 0];
+        const auto kind = static_cast<MaterialKind>(m.kind);
+        const std::uint32_t stream = bounce + 1;
+        const float u_rr = rnd(stream, 0);
+
+        if (kind == MaterialKind::mirror) {
+            if (bounce >= s.max_bounces || !roulette(power, to_vec3(m.specular), u_rr)) break;
+            direction = glm::normalize(reflect_about(direction, n));
+        } else if (kind == MaterialKind::glass) {
+            const float ior = m.ior > 0.0f ? m.ior : 1.5f;
+            const float eta = front ? 1.0f / ior : ior;
+            const float cos_i = -glm::dot(direction, n);
+            float cos_t;
+            const float fresnel = dielectric_fresnel(cos_i, eta, cos_t);
+            if (bounce >= s.max_bounces) break;
+            if (rnd(stream, 3) < fresnel) {
+                direction = glm::normalize(reflect_about(direction, n));
+            } else {
+                if (!roulette(power, to_vec3(m.transmission), u_rr)) break;
+                direction = refract_through(direction, n, eta, cos_i, cos_t);
+            }
+        } else {
+            PhotonHit& h = out[result.stored++];
+            put3(h.position, p);
+            h.flags = make_photon_flags(bounce, specular_only && bounce > 0);
+            put3(h.power, power);
+            h.path = static_cast<std::uint32_t>(path);
+            put3(h.direction, direction);
+            h.reserved0 = 0;
+            put3(h.normal, n);
+            h.reserved1 = 0;
+            specular_only = false;
+            if (bounce >= s.max_bounces || !roulette(power, to_vec3(m.diffuse), u_rr)) break;
+            direction = cosine_direction(n, rnd(stream, 1), rnd(stream, 2));
+        }
+        // Leave the surface on the side the new direction points to.
+        origin = p + (glm::dot(direction, ng) >= 0.0f ? s.ray_offset : -s.ray_offset) * ng;
+    }
+    return result;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,43 @@
+#pragma once
+// The CPU driver of the shooting kernel: runs trace_photon_path for every path in batches on
+// oneTBB (each path writes only its own max_bounces + 1 slots), then compacts the slots in path
+// order, so the hits are identical whatever the thread count.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "formats/photon_layout.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/photons/light_table.h"
+
+namespace kdpm {
+
+struct ShootOptions {
+    std::uint64_t photons = 262144;  // paths to emit
+    std::uint32_t max_bounces = 4;
+    std::uint32_t seed = 0;
+};
+
+struct ShotPhotons {
+    PhotonHitsInfo info{};
+    std::vector<PhotonHit> hits;
+    std::uint64_t rays = 0;
+};
+
+// The lights' cumulative power table (owned storage for a LightTable).
+struct LightDistribution {
+    std::vector<float> cdf;
+    LightTable table(const GeometryView& g) const;
+    static LightDistribution of(const GeometryView& g);
+    float total_power = 0.0f;
+};
+
+// Throws std::invalid_argument when the scene has no light with power, or for more than
+// 2^32 - 1 photons. `progress` receives the fraction done.
+ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
+                          const std::function<void(double)>& progress = {});
+
+// Offset of ray origins off surfaces: a small fraction of the scene's size.
+float photon_ray_offset(const GeometryInfo& info);
+
+}  // namespace kdpm

@@ -1,0 +1,91 @@
+#pragma once
+// The photon map radiance estimate at a diffuse surface point (Jensen):
+//   L = sum over the k nearest photons of  f_r * power * w  /  (pi r^2 * norm)
+// with f_r = albedo / pi, r the distance to the k-th photon (or the maximum radius when fewer
+// were found within it), and w a cone filter weight (1 - d / (cone_k r), norm 1 - 2 / (3 cone_k))
+// when enabled. Against light leaks, photons whose stored normal disagrees with the surface
+// normal, or that arrived from behind the surface, are skipped, and the search may be
+// flattened toward the surface (DiscMetric).
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "formats/host_device.h"
+#include "formats/photon_layout.h"
+#include "runtime/photons/knn_search.h"
+
+namespace kdpm {
+
+struct RadianceEstimateParams {
+    std::uint32_t k = 32;          // photons per estimate, 1..kMaxGatherK
+    float max_radius = 0.0f;       // <= 0: unlimited
+    bool cone_filter = false;
+    float cone_k = 1.1f;           // cone slope (>= 1)
+    float min_normal_cos = 0.7f;   // stored normal . surface normal must reach this (-1 disables)
+    float flatten = 0.0f;          // DiscMetric flattening (0: a sphere)
+    std::uint32_t min_bounce = 0;  // 1 for "direct + photons": skip the direct-light hits
+    std::uint32_t exclude_flags = 0;  // e.g. kPhotonCaustic when the caustic map is gathered separately
+};
+
+struct RadianceEstimate {
+    glm::vec3 radiance{0.0f};  // outgoing radiance toward the viewer (W / (m^2 sr))
+    float radius = 0.0f;       // search radius used
+    std::uint32_t count = 0;   // photons found
+};
+
+// Photons that may light this surface point (see the file comment).
+struct SurfacePhotonFilter {
+    const PhotonMapView* map;
+    glm::vec3 normal;
+    float min_normal_cos;
+    std::uint32_t min_bounce;
+    std::uint32_t exclude_flags;
+    KDPM_HD bool operator()(std::uint32_t p) const {
+        const std::uint32_t f = map->flags[p];
+        if ((f & exclude_flags) != 0 || photon_bounce(f) < min_bounce) return false;
+        float d[3], nn[3];
+        decode_octahedral(map->directions[p].direction, d);
+        if (d[0] * normal.x + d[1] * normal.y + d[2] * normal.z >= 0.0f) return false;  // from behind
+        if (min_normal_cos <= -1.0f) return true;
+        decode_octahedral(map->directions[p].normal, nn);
+        return nn[0] * normal.x + nn[1] * normal.y + nn[2] * normal.z >= min_normal_cos;
+    }
+};
+
+// `normal`: unit surface normal on the viewer's side; `albedo`: the diffuse reflectance.
+KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
+                                                  glm::vec3 albedo, const RadianceEstimateParams& params,
+                                                  KnnHeap& heap) {
+    RadianceEstimate out;
+    SurfacePhotonFilter filter{&map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags};
+    std::uint32_t found =
+        params.flatten > 0.0f
+            ? knn_search(map, position, params.k, params.max_radius, DiscMetric{normal, params.flatten}, filter, heap)
+            : knn_search(map, position, params.k, params.max_radius, EuclideanMetric{}, filter, heap);
+    out.count = found;
+    if (found == 0) return out;
+    const std::uint32_t k = params.k < 1 ? 1 : (params.k > kMaxGatherK ? kMaxGatherK : params.k);
+    float r2 = heap.d2[0];
+    if (found < k && params.max_radius > 0.0f) r2 = params.max_radius * params.max_radius;
+    if (!(r2 > 0.0f)) return out;
+    const float r = sqrtf(r2);
+    const float cone_k = params.cone_k < 1.0f ? 1.0f : params.cone_k;
+    glm::vec3 flux(0.0f);
+    for (std::uint32_t i = 0; i < found; ++i) {
+        float pw[3];
+        decode_rgbe(map.power[heap.index[i]], pw);
+        float w = 1.0f;
+        if (params.cone_filter) {
+            w = 1.0f - sqrtf(heap.d2[i]) / (cone_k * r);
+            w = w < 0.0f ? 0.0f : w;
+        }
+        flux += w * glm::vec3(pw[0], pw[1], pw[2]);
+    }
+    const float norm = params.cone_filter ? 1.0f - 2.0f / (3.0f * cone_k) : 1.0f;
+    constexpr float kPi = 3.14159265358979f;
+    out.radiance = albedo * (1.0f / kPi) * flux / (kPi * r2 * norm);
+    out.radius = r;
+    return out;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,40 @@
+#pragma once
+// The CPU backend's side of run_frame: host arrays and oneTBB launches in small grains (each
+// work item is one pixel or one vertex slot and writes only its own slots).
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "runtime/backend/cpu_parallel_for.h"
+
+namespace kdpm {
+
+struct CpuDevice {
+    template <class T>
+    struct Array {
+        std::unique_ptr<T[]> items;
+        std::uint64_t count = 0;
+        T* data() const { return items.get(); }
+    };
+    // Zero-filled.
+    template <class T>
+    Array<T> array(std::uint64_t n) {
+        return Array<T>{std::unique_ptr<T[]>(new T[n]()), n};
+    }
+    // Left uninitialised: for arrays every item of which a pass writes before any is read.
+    template <class T>
+    Array<T> scratch(std::uint64_t n) {
+        return Array<T>{std::unique_ptr<T[]>(new T[n]), n};
+    }
+    template <class T>
+    void to_host(const Array<T>& a, std::vector<T>& out) {
+        out.assign(a.data(), a.data() + a.count);
+    }
+    template <class Pass>
+    void launch(std::uint64_t n, const Pass& pass) {
+        cpu_parallel_for(n, pass, 16);
+    }
+};
+
+}  // namespace kdpm

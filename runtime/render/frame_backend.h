@@ -1,0 +1,22 @@
+#pragma once
+// The backend-specific half of the Renderer: where the scene arrays live and how passes run.
+// The CPU backend uses the mapped sections in place; the CUDA backend uploads each once.
+#include <memory>
+
+#include "runtime/render/frame_loop.h"
+#include "runtime/render/scene_views.h"
+
+namespace kdpm {
+
+class FrameBackend {
+public:
+    virtual ~FrameBackend() = default;
+    virtual void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) = 0;
+    virtual double upload_ms() const { return 0.0; }
+};
+
+std::unique_ptr<FrameBackend> make_cpu_frame_backend(const SceneViews& scene);
+// Defined only when the build has the CUDA backend (KDPM_HAVE_CUDA).
+std::unique_ptr<FrameBackend> make_cuda_frame_backend(const SceneViews& scene);
+
+}  // namespace kdpm

@@ -1,0 +1,113 @@
+#pragma once
+// One frame, written once for both backends: per sample, the trace, gather and shade passes
+// over the frame arrays, then the sums come back to the host. `Device` supplies arrays
+// (array<T>(n) zero-filled, scratch<T>(n) not), launches (launch(n, pass)) and copies to the host (to_host).
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/render/camera.h"
+#include "runtime/render/frame_buffers.h"
+#include "runtime/render/photon_gather_pass.h"
+#include "runtime/render/render_settings.h"
+#include "runtime/render/shade_pass.h"
+#include "runtime/render/stage_times.h"
+#include "runtime/render/trace_pass.h"
+
+namespace kdpm {
+
+// Decided on the host from the settings and the scene, the same for both backends.
+struct FramePlan {
+    PinholeCamera camera;
+    std::uint32_t width = 0, height = 0;
+    RenderSettings settings;
+    float epsilon = 1e-4f;
+    bool gather_photons = false;
+    bool direct_light = false;
+};
+
+template <class Device>
+void run_frame(Device& dev, const GeometryView& geometry, const LightDistributionView& lights,
+               const PhotonGatherPass& gather_template,
+               const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
+    const std::uint64_t slots = pixels * kMaxDiffuseVertices;
+    const AovSet& want = plan.settings.aovs;
+    StopWatch watch;
+
+    // Only the sums start at zero; the trace pass writes every pixel's emitted light, vertex
+    // count and AOVs, and the later passes read only the vertex slots it filled.
+    auto accum = dev.template array<glm::vec3>(pixels);
+    auto emitted = dev.template scratch<glm::vec3>(pixels);
+    auto vertex_count = dev.template scratch<std::uint32_t>(pixels);
+    auto vertices = dev.template scratch<DiffuseVertex>(slots);
+    auto gathered = dev.template scratch<glm::vec3>(plan.gather_photons ? slots : 0);
+    auto depth = dev.template scratch<float>(want.depth ? pixels : 0);
+    auto normal = dev.template scratch<glm::vec3>(want.normal ? pixels : 0);
+    auto position = dev.template scratch<glm::vec3>(want.position ? pixels : 0);
+    auto triangle = dev.template scratch<std::int32_t>(want.triangle ? pixels : 0);
+
+    FrameBuffersView fb;
+    fb.width = plan.width;
+    fb.height = plan.height;
+    fb.emitted = emitted.data();
+    fb.vertex_count = vertex_count.data();
+    fb.vertices = vertices.data();
+    fb.gathered = plan.gather_photons ? gathered.data() : nullptr;
+    fb.accum = accum.data();
+    fb.depth = want.depth ? depth.data() : nullptr;
+    fb.normal = want.normal ? normal.data() : nullptr;
+    fb.position = want.position ? position.data() : nullptr;
+    fb.triangle = want.triangle ? triangle.data() : nullptr;
+    times.transfer_ms += watch.lap_ms();
+
+    const std::uint32_t spp = plan.settings.spp < 1 ? 1 : plan.settings.spp;
+    auto report = [&](std::uint32_t sample, int passes_done) {
+        if (plan.settings.progress) plan.settings.progress((sample * 3.0 + passes_done) / (3.0 * spp));
+    };
+    for (std::uint32_t s = 0; s < spp; ++s) {
+        TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
+        dev.launch(pixels, trace);
+        times.ray_tracing_ms += watch.lap_ms();
+        report(s, 1);
+
+        if (plan.gather_photons) {
+            PhotonGatherPass gather = gather_template;
+            gather.frame = fb;
+            dev.launch(slots, gather);
+            times.photon_gather_ms += watch.lap_ms();
+            report(s, 2);
+        }
+
+        ShadePass shade{geometry, lights, fb, s, plan.settings.light_samples, plan.direct_light,
+                        plan.gather_photons, plan.epsilon};
+        dev.launch(pixels, shade);
+        times.shading_ms += watch.lap_ms();
+        report(s, 3);
+    }
+
+    std::vector<glm::vec3> sums;
+    dev.to_host(accum, sums);
+    linear = Image(static_cast<int>(plan.width), static_cast<int>(plan.height));
+    const float inv_spp = 1.0f / static_cast<float>(spp);
+    for (std::uint64_t i = 0; i < pixels; ++i)
+        for (int c = 0; c < 3; ++c) linear.rgb[i * 3 + c] = sums[i][c] * inv_spp;
+
+    aovs = AovImages{};
+    if (want.depth) dev.to_host(depth, aovs.depth);
+    if (want.triangle) dev.to_host(triangle, aovs.triangle);
+    auto flatten = [&](auto& array, std::vector<float>& out) {
+        std::vector<glm::vec3> v;
+        dev.to_host(array, v);
+        out.resize(v.size() * 3);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            for (int c = 0; c < 3; ++c) out[i * 3 + c] = v[i][c];
+    };
+    if (want.normal) flatten(normal, aovs.normal);
+    if (want.position) flatten(position, aovs.position);
+    times.transfer_ms += watch.lap_ms();
+}
+
+}  // namespace kdpm

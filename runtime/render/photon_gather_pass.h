@@ -1,0 +1,76 @@
+#pragma once
+// Pass 2 of a frame sample: the photon-map radiance at each diffuse vertex (k-nearest photons,
+// Jensen's estimate, from the photon library's KDPM_HD kernels).
+//   mode photons:        every photon of the global map (direct and indirect light alike);
+//   mode direct+photons: the global map without the direct hits (bounce >= 1) and without the
+//                        caustic photons, plus the caustic map (direct light comes from shadow rays).
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "formats/host_device.h"
+#include "formats/photon_layout.h"
+#include "runtime/photons/photon_map_view.h"
+#include "runtime/photons/radiance_estimate.h"
+#include "runtime/render/frame_buffers.h"
+#include "runtime/render/tile_order.h"
+
+namespace kdpm {
+
+// The photon maps of a .kdp (host or device arrays); empty when no photon file was given.
+struct PhotonMaps {
+    PhotonMapView global;
+    PhotonMapView caustic;
+    bool present = false;
+    float typical_radius = 0.0f;  // median distance to the 32nd nearest photon (.kdp info); 0: unknown
+    bool empty() const { return !present; }
+};
+
+struct PhotonGatherPass {
+    FrameBuffersView frame;
+    PhotonMaps maps;
+    RadianceEstimateParams global_params;
+    RadianceEstimateParams caustic_params;
+    bool use_caustic_map = false;
+
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item / kMaxDiffuseVertices, frame.width, frame.height);
+        const std::uint64_t slot = pixel * kMaxDiffuseVertices + item % kMaxDiffuseVertices;
+        if (item % kMaxDiffuseVertices >= frame.vertex_count[pixel]) return;
+        const DiffuseVertex& v = frame.vertices[slot];
+        KnnHeap heap;
+        glm::vec3 l = estimate_radiance(maps.global, v.position, v.shading_normal, v.albedo, global_params, heap).radiance;
+        if (use_caustic_map && maps.caustic.node_count > 0)
+            l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap).radiance;
+        frame.gathered[slot] = l;
+    }
+};
+
+// Default search limit: this many times the typical radius for k photons. Where photons are
+// sparse (dark corners, or the indirect-only subset), an unlimited k-nearest search wanders
+// over much of the scene; beyond the limit the estimate uses the photons found in the disc.
+inline constexpr float kAutoRadiusFactor = 4.0f;
+
+// direct_light: the mode adds direct light by shadow rays, so direct photon hits are skipped.
+// max_radius < 0: automatic (see kAutoRadiusFactor); 0: unlimited.
+inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, std::uint32_t k,
+                                         float max_radius = -1.0f) {
+    PhotonGatherPass pass;
+    pass.maps = maps;
+    pass.global_params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    if (max_radius < 0.0f)
+        max_radius = maps.typical_radius > 0.0f
+                         ? kAutoRadiusFactor * maps.typical_radius * sqrtf(static_cast<float>(pass.global_params.k) / 32.0f)
+                         : 0.0f;
+    pass.global_params.max_radius = max_radius;
+    pass.caustic_params = pass.global_params;
+    if (direct_light) {
+        pass.global_params.min_bounce = 1;
+        pass.global_params.exclude_flags = kPhotonCaustic;
+        pass.use_caustic_map = true;
+    }
+    return pass;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,45 @@
+#pragma once
+// What one frame should be: resolution, camera, sampling, the lighting method, AOVs and post.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string_view>
+
+#include "formats/geometry_layout.h"
+#include "runtime/render/image.h"
+#include "runtime/render/post_process.h"
+#include "runtime/render/stage_times.h"
+
+namespace kdpm {
+
+enum class RenderMode : std::uint32_t {
+    photons = 0,         // the report's method: all light from the k nearest photons at the first diffuse hit
+    direct_photons = 1,  // direct light by shadow rays + indirect (global map, bounce >= 1) + caustics map
+    direct = 2,          // direct light only (no photon map needed)
+};
+RenderMode parse_render_mode(std::string_view text);  // throws std::invalid_argument
+const char* render_mode_name(RenderMode mode);
+
+struct RenderSettings {
+    std::uint32_t width = 0, height = 0;  // 0: the camera record's
+    std::uint32_t spp = 1;
+    RenderMode mode = RenderMode::photons;
+    std::uint32_t k = 0;                  // photons per estimate; 0: the scene's default (else 100)
+    float max_radius = -1.0f;             // photon search limit; < 0: automatic, 0: unlimited
+    std::uint32_t light_samples = 16;     // shadow rays per diffuse point (lights picked by power)
+    std::uint32_t max_depth = 8;          // mirror/glass bounces followed
+    std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
+    AovSet aovs;
+    PostSettings post;
+    std::function<void(double)> progress;  // called on the host with the fraction done
+};
+
+struct RenderResult {
+    Image linear;   // radiance, before exposure
+    Image exposed;  // exposure and bloom applied (what EXR files get)
+    Image display;  // tone-mapped sRGB in [0, 1] (what PNG files get)
+    AovImages aovs;
+    StageTimes times;
+};
+
+}  // namespace kdpm

@@ -1,0 +1,89 @@
+#include "runtime/render/renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "runtime/render/frame_backend.h"
+
+namespace kdpm {
+
+RenderMode parse_render_mode(std::string_view text) {
+    if (text == "photons") return RenderMode::photons;
+    if (text == "direct+photons") return RenderMode::direct_photons;
+    if (text == "direct") return RenderMode::direct;
+    throw std::invalid_argument("expected photons, direct+photons or direct, got '" + std::string(text) + "'");
+}
+
+const char* render_mode_name(RenderMode mode) {
+    switch (mode) {
+        case RenderMode::photons: return "photons";
+        case RenderMode::direct_photons: return "direct+photons";
+        case RenderMode::direct: return "direct";
+    }
+    return "?";
+}
+
+float scene_epsilon(const GeometryInfo& info) {
+    float extent = 1.0f;
+    for (int a = 0; a < 3; ++a)
+        extent = std::max({extent, std::fabs(info.bounds_min[a]), std::fabs(info.bounds_max[a])});
+    return 2e-5f * extent;
+}
+
+Renderer::Renderer(const SceneViews& scene, BackendKind backend) : scene_(scene), backend_(backend) {
+    if (backend == BackendKind::cuda) {
+#if defined(KDPM_HAVE_CUDA)
+        impl_ = make_cuda_frame_backend(scene_);
+#else
+        throw std::runtime_error("this build of kdpm has no CUDA backend");
+#endif
+    } else {
+        impl_ = make_cpu_frame_backend(scene_);
+    }
+}
+
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+
+double Renderer::upload_ms() const { return impl_->upload_ms(); }
+
+RenderResult Renderer::render(const RenderSettings& settings) {
+    FramePlan plan;
+    plan.settings = settings;
+    const CameraRecord camera = settings.camera ? *settings.camera : scene_.camera;
+    plan.width = settings.width ? settings.width : camera.width;
+    plan.height = settings.height ? settings.height : camera.height;
+    // Only one side given: keep the camera's aspect ratio.
+    if (settings.width && !settings.height && camera.width && camera.height)
+        plan.height = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(
+            std::lround(static_cast<double>(settings.width) * camera.height / camera.width)));
+    if (settings.height && !settings.width && camera.width && camera.height)
+        plan.width = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(
+            std::lround(static_cast<double>(settings.height) * camera.width / camera.height)));
+    if (plan.width == 0 || plan.height == 0 || plan.width > 16384 || plan.height > 16384)
+        throw std::runtime_error("image size " + std::to_string(plan.width) + "x" + std::to_string(plan.height) +
+                                 " is out of range (1..16384)");
+    if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
+        throw std::runtime_error("camera field of view must be in (0, 180) degrees");
+    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, settings.spp);
+    plan.epsilon = scene_epsilon(scene_.geometry.info);
+    plan.direct_light = settings.mode != RenderMode::photons;
+    plan.gather_photons = settings.mode != RenderMode::direct;
+    if (plan.gather_photons && scene_.photons.empty())
+        throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
+                                 " needs a photon map (.kdp); use --mode direct without one");
+    if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
+
+    RenderResult result;
+    impl_->run(plan, result.linear, result.aovs, result.times);
+    StopWatch watch;
+    result.exposed = expose(result.linear, settings.post);
+    result.display = to_display(result.exposed, settings.post.tone_map);
+    result.times.post_ms += watch.lap_ms();
+    return result;
+}
+
+}  // namespace kdpm

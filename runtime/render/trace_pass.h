@@ -1,0 +1,134 @@
+#pragma once
+// Pass 1 of a frame sample: the camera ray of each pixel, followed through mirrors and glass
+// (a small explicit stack, bounded depth), ending on diffuse surfaces. Records the diffuse
+// vertices to shade, the emitters seen on the way, and the first hit's AOVs.
+#include <cstdint>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "formats/geometry_layout.h"
+#include "formats/host_device.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/surface_normal.h"
+#include "runtime/render/camera.h"
+#include "runtime/render/frame_buffers.h"
+#include "runtime/render/specular.h"
+#include "runtime/render/tile_order.h"
+
+namespace kdpm {
+
+// A surface interaction in the form every pass uses.
+struct SurfacePoint {
+    glm::vec3 position;
+    glm::vec3 shading_normal;    // facing the incoming ray
+    glm::vec3 geometric_normal;  // facing the incoming ray
+    bool front;                  // the ray hit the side cross(e1, e2) points to
+};
+
+KDPM_HD KDPM_INLINE SurfacePoint surface_at(const GeometryView& g, const Ray& ray, const Hit& hit) {
+    const TriangleRecord& tri = g.triangles[hit.triangle];
+    const glm::vec3 ng = geometric_normal(tri);
+    glm::vec3 ns = shading_normal(g, hit.triangle, hit.u, hit.v);
+    SurfacePoint s;
+    s.front = glm::dot(ng, ray.direction) < 0.0f;
+    s.geometric_normal = s.front ? ng : -ng;
+    if (glm::dot(ns, s.geometric_normal) < 0.0f) ns = -ns;
+    s.shading_normal = ns;
+    s.position = ray.origin + hit.t * ray.direction;
+    return s;
+}
+
+KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& g, std::uint32_t triangle) {
+    const std::uint32_t m = g.triangles[triangle].material;
+    if (m < g.material_count) return g.materials[m];
+    MaterialRecord grey{};  // a file without materials renders as mid grey
+    grey.diffuse[0] = grey.diffuse[1] = grey.diffuse[2] = 0.5f;
+    return grey;
+}
+
+KDPM_HD KDPM_INLINE glm::vec3 rgb(const float (&a)[3]) { return glm::vec3(a[0], a[1], a[2]); }
+
+struct TracePass {
+    GeometryView geometry;
+    PinholeCamera camera;
+    FrameBuffersView frame;
+    std::uint32_t sample = 0;
+    std::uint32_t max_depth = 8;
+    float epsilon = 1e-4f;  // ray offset from surfaces, scaled to the scene
+
+    struct Pending {
+        glm::vec3 origin, direction, throughput;
+        std::uint32_t depth;
+    };
+    static constexpr int kStack = 8;
+
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
+        const std::uint32_t x = static_cast<std::uint32_t>(pixel % frame.width);
+        const std::uint32_t y = static_cast<std::uint32_t>(pixel / frame.width);
+        const CameraRay cam = camera.ray(x, y, sample);
+
+        Pending stack[kStack];
+        int sp = 0;
+        stack[sp++] = Pending{cam.origin, cam.direction, glm::vec3(1.0f), 0u};
+        glm::vec3 emitted(0.0f);
+        std::uint32_t count = 0;
+        bool first = true;
+        while (sp > 0) {
+            const Pending r = stack[--sp];
+            const Ray ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()};
+            const Hit hit = closest_hit(geometry, ray);
+            if (first) {
+                write_aovs(pixel, ray, hit);
+                first = false;
+            }
+            if (!hit.found()) continue;
+            const SurfacePoint s = surface_at(geometry, ray, hit);
+            const MaterialRecord m = material_of(geometry, hit.triangle);
+            if (s.front) emitted += r.throughput * rgb(m.emission);
+
+            const glm::vec3 above = s.position + epsilon * s.geometric_normal;
+            const glm::vec3 below = s.position - epsilon * s.geometric_normal;
+            const bool deeper = r.depth + 1 < max_depth;
+            if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
+                if (deeper && sp < kStack)
+                    stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal),
+                                          r.throughput * rgb(m.specular), r.depth + 1};
+            } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
+                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
+                glm::vec3 refracted(0.0f);
+                const float f = fresnel_refract(r.direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
+                if (deeper && sp < kStack && f > 0.0f)
+                    stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal), r.throughput * f,
+                                          r.depth + 1};
+                if (deeper && sp < kStack && f < 1.0f)
+                    stack[sp++] = Pending{below, refracted, r.throughput * (1.0f - f) * rgb(m.transmission),
+                                          r.depth + 1};
+            } else if (count < kMaxDiffuseVertices) {
+                frame.vertices[pixel * kMaxDiffuseVertices + count] =
+                    DiffuseVertex{s.position, s.shading_normal, s.geometric_normal, rgb(m.diffuse), r.throughput};
+                ++count;
+            }
+        }
+        frame.emitted[pixel] = emitted;
+        frame.vertex_count[pixel] = count;
+    }
+
+    KDPM_HD void write_aovs(std::uint64_t pixel, const Ray& ray, const Hit& hit) const {
+        if (sample != 0) return;
+        const bool found = hit.found();
+        SurfacePoint s{};
+        if (found) s = surface_at(geometry, ray, hit);
+        if (frame.depth) frame.depth[pixel] = found ? hit.t : std::numeric_limits<float>::infinity();
+        if (frame.normal) frame.normal[pixel] = found ? s.geometric_normal : glm::vec3(0.0f);
+        if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);
+        if (frame.triangle)
+            frame.triangle[pixel] =
+                found ? static_cast<std::int32_t>(geometry.triangles[hit.triangle].source_index) : -1;
+    }
+};
+
+}  // namespace kdpm

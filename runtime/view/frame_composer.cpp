@@ -1,0 +1,133 @@
+#include "runtime/view/frame_composer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/glm.hpp>
+
+#include "runtime/view/bitmap_font.h"
+
+namespace kdpm {
+
+namespace {
+
+Image depth_view(const RenderResult& frame) {
+    Image out(frame.linear.width, frame.linear.height);
+    const auto& d = frame.aovs.depth;
+    if (d.size() != out.pixel_count()) return out;
+    float lo = std::numeric_limits<float>::infinity(), hi = 0.0f;
+    for (float v : d)
+        if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    const float span = hi > lo ? hi - lo : 1.0f;
+    // Near is bright, far is dark, misses are black.
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        const float g = std::isfinite(d[i]) ? 1.0f - 0.85f * (d[i] - lo) / span : 0.0f;
+        for (int c = 0; c < 3; ++c) out.rgb[i * 3 + c] = g;
+    }
+    return out;
+}
+
+Image normal_view(const RenderResult& frame) {
+    Image out(frame.linear.width, frame.linear.height);
+    const auto& n = frame.aovs.normal;
+    if (n.size() != out.pixel_count() * 3) return out;
+    for (std::size_t i = 0; i < out.pixel_count(); ++i) {
+        const bool hit = n[i * 3] != 0.0f || n[i * 3 + 1] != 0.0f || n[i * 3 + 2] != 0.0f;
+        for (int c = 0; c < 3; ++c) out.rgb[i * 3 + c] = hit ? 0.5f + 0.5f * n[i * 3 + c] : 0.0f;
+    }
+    return out;
+}
+
+// Log-scaled heat map of the density between the frame's 1st and 99th percentiles.
+Image density_view(const RenderResult& frame, const std::vector<float>& density) {
+    Image out(frame.linear.width, frame.linear.height);
+    if (density.size() != out.pixel_count()) return out;
+    std::vector<float> logs;
+    for (float d : density)
+        if (d > 0.0f && std::isfinite(d)) logs.push_back(std::log(d));
+    if (logs.empty()) return out;
+    std::sort(logs.begin(), logs.end());
+    const float lo = logs[logs.size() / 100], hi = logs[logs.size() - 1 - logs.size() / 100];
+    const float span = hi > lo ? hi - lo : 1.0f;
+    for (std::size_t i = 0; i < density.size(); ++i) {
+        if (!(density[i] > 0.0f) || !std::isfinite(density[i])) continue;
+        const glm::vec3 c = heat_color(0.1f + 0.9f * (std::log(density[i]) - lo) / span);
+        for (int k = 0; k < 3; ++k) out.rgb[i * 3 + k] = c[k];
+    }
+    return out;
+}
+
+}  // namespace
+
+glm::vec3 heat_color(float t) {
+    if (!std::isfinite(t)) t = 0.0f;
+    t = std::clamp(t, 0.0f, 1.0f);
+    const glm::vec3 stops[5] = {{0, 0, 0}, {0.1f, 0.1f, 0.9f}, {0.9f, 0.1f, 0.2f}, {1.0f, 0.85f, 0.1f}, {1, 1, 1}};
+    const float x = t * 4.0f;
+    const int i = std::min(3, static_cast<int>(x));
+    return glm::mix(stops[i], stops[i + 1], x - static_cast<float>(i));
+}
+
+Image compose_view(const RenderResult& frame, const std::vector<float>& density, const ViewOptions& options) {
+    switch (options.view) {
+        case ViewKind::depth: return depth_view(frame);
+        case ViewKind::normal: return normal_view(frame);
+        case ViewKind::photon_density: return density_view(frame, density);
+        case ViewKind::shaded: break;
+    }
+    PostSettings post;
+    post.exposure_stops = options.exposure_stops;
+    post.tone_map = options.tone_map;
+    return to_display(expose(frame.linear, post), post.tone_map);
+}
+
+Image resize_nearest(const Image& source, int width, int height) {
+    if (source.width == width && source.height == height) return source;
+    Image out(width, height);
+    if (source.width <= 0 || source.height <= 0) return out;
+    for (int y = 0; y < height; ++y) {
+        const int sy = std::min(source.height - 1, static_cast<int>(static_cast<long long>(y) * source.height / height));
+        for (int x = 0; x < width; ++x) {
+            const int sx = std::min(source.width - 1, static_cast<int>(static_cast<long long>(x) * source.width / width));
+            const float* s = &source.rgb[(static_cast<std::size_t>(sy) * source.width + sx) * 3];
+            float* d = &out.rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+            d[0] = s[0];
+            d[1] = s[1];
+            d[2] = s[2];
+        }
+    }
+    return out;
+}
+
+void draw_overlay(Image& image, const std::string& stats, const ViewOptions& options) {
+    // Text doubles in size on large images so it stays legible.
+    const int scale = image.height >= 1000 ? 2 : 1;
+    const glm::vec3 ink(1.0f, 1.0f, 0.85f);
+    if (options.stats && !stats.empty()) {
+        darken_rect(image, 0, 0, BitmapFont::text_width(stats, scale) + 8 * scale,
+                    BitmapFont::text_height(stats, scale) + 8 * scale, 0.45f);
+        draw_text(image, 4 * scale, 4 * scale, stats, ink, scale);
+    }
+    if (options.help) {
+        const std::string help = key_help_text();
+        const int w = BitmapFont::text_width(help, scale) + 12 * scale;
+        const int h = BitmapFont::text_height(help, scale) + 12 * scale;
+        const int x = std::max(0, (image.width - w) / 2), y = std::max(0, (image.height - h) / 2);
+        darken_rect(image, x, y, w, h, 0.25f);
+        draw_text(image, x + 6 * scale, y + 6 * scale, help, ink, scale);
+    }
+}
+
+void to_rgb8(const Image& image, std::vector<unsigned char>& out) {
+    out.resize(image.rgb.size());
+    for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+        const float v = std::isfinite(image.rgb[i]) ? std::clamp(image.rgb[i], 0.0f, 1.0f) : 0.0f;
+        out[i] = static_cast<unsigned char>(std::lround(v * 255.0f));
+    }
+}
+
+}  // namespace kdpm

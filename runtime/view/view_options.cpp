@@ -1,0 +1,80 @@
+#include "runtime/view/view_options.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace kdpm {
+
+const char* view_name(ViewKind v) {
+    switch (v) {
+        case ViewKind::shaded: return "shaded";
+        case ViewKind::depth: return "depth";
+        case ViewKind::normal: return "normal";
+        case ViewKind::photon_density: return "photon density";
+    }
+    return "?";
+}
+
+ViewKind parse_view(std::string_view text) {
+    if (text == "shaded") return ViewKind::shaded;
+    if (text == "depth") return ViewKind::depth;
+    if (text == "normal") return ViewKind::normal;
+    if (text == "density") return ViewKind::photon_density;
+    throw std::invalid_argument("expected shaded, depth, normal or density, got '" + std::string(text) + "'");
+}
+
+const char* tone_map_name(ToneMap t) {
+    switch (t) {
+        case ToneMap::aces: return "aces";
+        case ToneMap::reinhard: return "reinhard";
+        case ToneMap::none: return "none";
+    }
+    return "?";
+}
+
+std::uint32_t clamp_k(std::uint32_t k) { return std::clamp(k, ViewOptions::kMinK, ViewOptions::kMaxK); }
+
+void ViewOptions::halve_k() { k = clamp_k(k / 2); }
+void ViewOptions::double_k() { k = clamp_k(k * 2); }
+
+void ViewOptions::next_mode(bool have_photons) {
+    if (!have_photons) {
+        mode = RenderMode::direct;
+        return;
+    }
+    switch (mode) {
+        case RenderMode::photons: mode = RenderMode::direct_photons; break;
+        case RenderMode::direct_photons: mode = RenderMode::direct; break;
+        case RenderMode::direct: mode = RenderMode::photons; break;
+    }
+}
+
+void ViewOptions::next_view(bool have_photons) {
+    switch (view) {
+        case ViewKind::shaded: view = ViewKind::depth; break;
+        case ViewKind::depth: view = ViewKind::normal; break;
+        case ViewKind::normal: view = have_photons ? ViewKind::photon_density : ViewKind::shaded; break;
+        case ViewKind::photon_density: view = ViewKind::shaded; break;
+    }
+}
+
+void ViewOptions::next_tone_map() {
+    switch (tone_map) {
+        case ToneMap::aces: tone_map = ToneMap::reinhard; break;
+        case ToneMap::reinhard: tone_map = ToneMap::none; break;
+        case ToneMap::none: tone_map = ToneMap::aces; break;
+    }
+}
+
+std::string key_help_text() {
+    return "W/A/S/D  move   Q/E  down/up   shift  faster\n"
+           "drag     look   R    reset to the file's camera\n"
+           "[ ]      halve/double k (2..256)\n"
+           "M        mode: photons / direct+photons / direct\n"
+           "V        view: shaded / depth / normal / photon density\n"
+           "+ -      exposure   T  tone mapper\n"
+           "F12      screenshot (PNG in the working folder)\n"
+           "H        help       O  stats   Esc  quit";
+}
+
+}  // namespace kdpm

@@ -1,0 +1,47 @@
+#pragma once
+// What the viewer shows, as changed by the keys: k, lighting mode, view, exposure, tone map.
+// Pure state and rules (ranges, which modes need a photon map) so they are testable without GL.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "runtime/render/post_process.h"
+#include "runtime/render/render_settings.h"
+
+namespace kdpm {
+
+enum class ViewKind { shaded, depth, normal, photon_density };
+const char* view_name(ViewKind v);
+ViewKind parse_view(std::string_view text);  // shaded, depth, normal, density; throws std::invalid_argument
+const char* tone_map_name(ToneMap t);
+
+struct ViewOptions {
+    static constexpr std::uint32_t kMinK = 2, kMaxK = 256;
+    static constexpr float kExposureStep = 0.5f;
+
+    std::uint32_t k = 64;
+    RenderMode mode = RenderMode::direct;
+    ViewKind view = ViewKind::shaded;
+    float exposure_stops = 0.0f;
+    ToneMap tone_map = ToneMap::aces;
+    bool help = false;
+    bool stats = true;
+
+    void halve_k();
+    void double_k();
+    // photons -> direct+photons -> direct -> photons; without a photon map only direct.
+    void next_mode(bool have_photons);
+    // shaded -> depth -> normal -> photon density (only with a photon map) -> shaded.
+    void next_view(bool have_photons);
+    void next_tone_map();  // aces -> reinhard -> none
+    void brighter() { exposure_stops = exposure_stops + kExposureStep > 16.0f ? 16.0f : exposure_stops + kExposureStep; }
+    void darker() { exposure_stops = exposure_stops - kExposureStep < -16.0f ? -16.0f : exposure_stops - kExposureStep; }
+};
+
+// k clamped to [kMinK, kMaxK]; the scene's default when 0.
+std::uint32_t clamp_k(std::uint32_t k);
+
+// The key list printed on start and shown by H.
+std::string key_help_text();
+
+}  // namespace kdpm

@@ -1,0 +1,24 @@
+// The same input gives byte-identical files whatever the number of threads.
+#include <catch2/catch.hpp>
+
+#include "runtime/backend/thread_limit.h"
+#include "tests/geometry/geometry_check.h"
+#include "tests/geometry/random_scenes.h"
+
+using namespace kdpm;
+
+TEST_CASE("one and two threads build byte-identical files", "[geometry][determinism]") {
+    // Large enough for several subtrees to be built in parallel.
+    const Scene scene = scene_from_triangles(test::random_soup(40000, 31, 0.05f));
+    std::vector<std::uint8_t> one, two;
+    {
+        ThreadLimit limit(1);
+        one = test::build_bytes(scene);
+    }
+    {
+        ThreadLimit limit(2);
+        two = test::build_bytes(scene);
+    }
+    REQUIRE(one.size() == two.size());
+    CHECK(one == two);
+}

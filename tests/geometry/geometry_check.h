@@ -1,0 +1,54 @@
+#pragma once
+// Builds a .kdg in memory from triangles, validates it exhaustively and compares closest hits
+// through the tree with brute force; shared by several geometry tests.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "builders/geometry/geometry_file_builder.h"
+#include "formats/container_reader.h"
+#include "formats/tree_validation.h"
+#include "runtime/geometry/geometry_file.h"
+#include "runtime/geometry/kd_traversal.h"
+
+namespace kdpm::test {
+
+// Rays whose tree result disagrees with brute force: not found on one side, another distance
+// (relative 1e-5), or another triangle not at the same distance (an exact tie is allowed).
+inline int count_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
+    int bad = 0;
+    for (const Ray& r : rays) {
+        const Hit a = closest_hit(g, r), b = closest_hit_brute_force(g, r);
+        if (a.found() != b.found()) {
+            ++bad;
+            continue;
+        }
+        if (!a.found()) {
+            if (occluded(g, r)) ++bad;
+            continue;
+        }
+        if (std::fabs(a.t - b.t) > 1e-5f * std::fabs(b.t)) ++bad;
+        else if (a.triangle != b.triangle && a.t != b.t) ++bad;
+        if (!occluded(g, r)) ++bad;
+    }
+    return bad;
+}
+
+inline std::vector<std::uint8_t> build_bytes(const Scene& scene, const KdBuildParams& params = {}) {
+    return build_geometry_file(scene, params).writer.bytes();
+}
+
+// Build, validate exhaustively, reopen through GeometryFile and compare rays with brute force.
+inline void check_triangles(std::vector<TriangleRecord> tris, const std::vector<Ray>& rays,
+                            const KdBuildParams& params = {}) {
+    const auto bytes = build_bytes(scene_from_triangles(std::move(tris)), params);
+    const auto reader = ContainerReader::from_bytes(bytes, "test.kdg");
+    ValidationOptions exhaustive;
+    exhaustive.exhaustive = true;
+    REQUIRE_NOTHROW(validate_file(reader, exhaustive));
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "test.kdg", true);
+    CHECK(count_mismatches(file.view(), rays) == 0);
+}
+
+}  // namespace kdpm::test

@@ -1,0 +1,66 @@
+// The O(N log N) builder reaches the same tree and SAH cost as the O(N^2) reference builder.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "builders/geometry/sah_kd_builder.h"
+#include "tests/geometry/random_scenes.h"
+#include "tests/geometry/reference_kd_builder.h"
+
+using namespace kdpm;
+
+namespace {
+
+// Axis-aligned unit quads on a grid: many planar triangles and equal split positions.
+std::vector<TriangleRecord> quad_grid() {
+    std::vector<TriangleRecord> tris;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const float x = static_cast<float>(i), y = static_cast<float>(j), z = static_cast<float>((i + j) % 3);
+            float a[3] = {x, y, z}, b[3] = {x + 1, y, z}, c[3] = {x + 1, y + 1, z}, d[3] = {x, y + 1, z};
+            tris.push_back(make_triangle(a, b, c, 0, 0));
+            tris.push_back(make_triangle(a, c, d, 0, 0));
+            float e[3] = {x, y, 0}, f[3] = {x, y + 1, 0}, g[3] = {x, y + 1, 2};
+            tris.push_back(make_triangle(e, f, g, 0, 0));  // planar in x
+        }
+    return tris;
+}
+
+void check_same_tree(const std::vector<TriangleRecord>& tris, const KdBuildParams& params) {
+    const KdTree fast = build_sah_kd_tree(tris, params);
+    const KdTree slow = test::ReferenceKdBuilder(tris, params).build();
+    CHECK(fast.stats.sah_cost == Approx(slow.stats.sah_cost).epsilon(1e-9));
+    CHECK(fast.stats.sah_cost < params.intersection_cost * static_cast<double>(tris.size()) + 1e-9);
+    REQUIRE(fast.nodes.size() == slow.nodes.size());
+    CHECK(std::memcmp(fast.nodes.data(), slow.nodes.data(), fast.nodes.size() * sizeof(KdNode)) == 0);
+    CHECK(fast.leaf_indices == slow.leaf_indices);
+}
+
+}  // namespace
+
+TEST_CASE("the SAH builder matches the O(N^2) reference on random soups", "[geometry][builder]") {
+    for (std::uint32_t n : {1u, 7u, 40u, 150u, 400u}) {
+        INFO("triangles: " << n);
+        check_same_tree(test::random_soup(n, n, 0.2f), KdBuildParams{});
+    }
+}
+
+TEST_CASE("the SAH builder matches the reference with other parameters", "[geometry][builder]") {
+    KdBuildParams p;
+    p.traversal_cost = 0.3f;
+    p.intersection_cost = 4.0f;
+    p.empty_bonus = 0.5f;
+    p.leaf_size = 2;
+    check_same_tree(test::random_soup(200, 9, 0.3f), p);
+    p.max_depth = 3;
+    check_same_tree(test::random_soup(200, 9, 0.3f), p);
+}
+
+TEST_CASE("the SAH builder matches the reference on planar grids and duplicates", "[geometry][builder]") {
+    auto grid = quad_grid();
+    check_same_tree(grid, KdBuildParams{});
+    auto soup = test::random_soup(60, 4, 0.2f);
+    auto doubled = soup;
+    doubled.insert(doubled.end(), soup.begin(), soup.end());
+    check_same_tree(doubled, KdBuildParams{});
+}

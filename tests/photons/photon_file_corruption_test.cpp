@@ -1,0 +1,127 @@
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+
+#include "builders/photons/photon_tree_builder.h"
+#include "builders/photons/photon_tree_writer.h"
+#include "formats/container_reader.h"
+#include "formats/section_ids.h"
+#include "formats/tree_validation.h"
+#include "runtime/photons/photon_map_file.h"
+#include "tests/photons/synthetic_photons.h"
+
+using namespace kdpm;
+
+namespace {
+
+void validate_bytes(const std::vector<std::uint8_t>& bytes) {
+    auto reader = ContainerReader::from_bytes(bytes, "x");
+    validate_file(reader, ValidationOptions{});
+}
+
+// Rewrites a tree file with one section's bytes altered (checksums stay consistent, so only
+// the structural checks can catch it).
+template <class Edit>
+std::vector<std::uint8_t> tampered_tree(const BuiltPhotonTree& original, Edit edit) {
+    BuiltPhotonTree t = original;
+    edit(t);
+    ContainerWriter w(FileKind::photon_tree);
+    add_photon_tree_sections(w, PhotonMapKind::global, t);
+    w.set_metadata(Metadata{});
+    return w.bytes();
+}
+
+}  // namespace
+
+TEST_CASE("Photon hit files with broken contents are rejected", "[photons][corrupt]") {
+    auto good = test::synthetic_photons(500, 8);
+    auto bytes_of = [](const PhotonHitSet& s) { return photon_hits_writer(s, Metadata{}).bytes(); };
+    CHECK_NOTHROW(validate_bytes(bytes_of(good)));
+
+    auto bad = good;
+    bad.hits[10].position[0] = std::nanf("");
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.hits[3].power[1] = -1.0f;
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.hits[3].direction[0] = 3.0f;
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.hits[3].flags = make_photon_flags(9, false);  // beyond max_bounces 4
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.info.stored_count += 1;
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.info.caustic_count += 1;
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+    bad = good;
+    bad.hits[7].position[2] = bad.info.bounds_max[2] + 1.0f;
+    CHECK_THROWS_AS(validate_bytes(bytes_of(bad)), FormatError);
+}
+
+TEST_CASE("Photon tree files with broken structure are rejected", "[photons][corrupt]") {
+    auto set = test::synthetic_photons(3000, 9);
+    auto tree = build_photon_tree(set.hits, PhotonTreeOptions{}, 3000, 4);
+    CHECK_NOTHROW(validate_bytes(tampered_tree(tree, [](BuiltPhotonTree&) {})));
+
+    auto first_inner = [](const BuiltPhotonTree& t) {
+        for (std::size_t i = 0; i < t.nodes.size(); ++i)
+            if (!t.nodes[i].is_leaf()) return i;
+        return std::size_t{0};
+    };
+    auto first_leaf = [](const BuiltPhotonTree& t) {
+        for (std::size_t i = 0; i < t.nodes.size(); ++i)
+            if (t.nodes[i].is_leaf() && t.nodes[i].count() > 0) return i;
+        return std::size_t{0};
+    };
+    std::vector<std::pair<const char*, std::vector<std::uint8_t>>> cases = {
+        {"above child out of range", tampered_tree(tree, [&](BuiltPhotonTree& t) {
+             auto& n = t.nodes[first_inner(t)];
+             n = KdNode::inner(n.axis(), n.split(), 1u << 29);
+         })},
+        {"above child pointing back", tampered_tree(tree, [&](BuiltPhotonTree& t) {
+             auto& n = t.nodes[first_inner(t)];
+             n = KdNode::inner(n.axis(), n.split(), 0);
+         })},
+        {"leaf count too large", tampered_tree(tree, [&](BuiltPhotonTree& t) {
+             t.nodes[first_leaf(t)] = KdNode::leaf(t.nodes[first_leaf(t)].first(), 1u << 28);
+         })},
+        {"photon moved out of its cell", tampered_tree(tree, [&](BuiltPhotonTree& t) {
+             t.x[t.nodes[first_leaf(t)].first()] = t.info.bounds_max[0];
+             t.x.back() = t.info.bounds_min[0];
+         })},
+        {"non-finite position", tampered_tree(tree, [&](BuiltPhotonTree& t) { t.y[5] = std::nanf(""); })},
+        {"photon count mismatch", tampered_tree(tree, [&](BuiltPhotonTree& t) { t.flags.pop_back(); })},
+        {"unknown flags", tampered_tree(tree, [&](BuiltPhotonTree& t) { t.flags[2] |= 0x80000000u; })},
+        {"wrong statistics", tampered_tree(tree, [&](BuiltPhotonTree& t) { t.info.leaf_count += 1; })},
+        {"too deep", tampered_tree(tree, [&](BuiltPhotonTree& t) { t.info.max_depth = 1000; })},
+    };
+    for (auto& [what, bytes] : cases) {
+        INFO(what);
+        CHECK_THROWS_AS(validate_bytes(bytes), FormatError);
+        CHECK_THROWS_AS(PhotonMapFile::from_bytes(bytes, "bad.kdp"), FormatError);
+    }
+}
+
+TEST_CASE("Random byte damage to a photon tree never crashes the loader", "[photons][corrupt]") {
+    auto set = test::synthetic_photons(400, 10);
+    auto tree = build_photon_tree(set.hits, PhotonTreeOptions{}, 400, 4);
+    auto good = tampered_tree(tree, [](BuiltPhotonTree&) {});
+    std::mt19937 rng(12);
+    int rejected = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        auto bytes = good;
+        int flips = 1 + trial % 4;
+        for (int f = 0; f < flips; ++f) bytes[rng() % bytes.size()] ^= static_cast<std::uint8_t>(1u << (rng() % 8));
+        if (trial % 5 == 0) bytes.resize(rng() % bytes.size());
+        try {
+            PhotonMapFile::from_bytes(bytes, "fuzz.kdp");
+        } catch (const FormatError&) {
+            ++rejected;
+        }
+    }
+    CHECK(rejected == 300);  // checksums catch every flip and truncation
+}

@@ -1,0 +1,65 @@
+#include <catch2/catch.hpp>
+
+#include <limits>
+
+#include "runtime/view/frame_composer.h"
+
+using namespace kdpm;
+
+namespace {
+
+RenderResult two_pixel_frame() {
+    RenderResult r;
+    r.linear = Image(2, 1);
+    r.linear.rgb = {0.5f, 0.5f, 0.5f, 2.0f, 2.0f, 2.0f};
+    r.aovs.depth = {1.0f, 3.0f};
+    r.aovs.normal = {0.0f, 0.0f, 1.0f, 0.0f, 1.0f, 0.0f};
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("frame composer shaded view equals kdpm-render's post-processing", "[view][composer]") {
+    RenderResult r = two_pixel_frame();
+    ViewOptions o;
+    o.exposure_stops = 1.0f;
+    o.tone_map = ToneMap::reinhard;
+    PostSettings post;
+    post.exposure_stops = 1.0f;
+    post.tone_map = ToneMap::reinhard;
+    CHECK(compose_view(r, {}, o).rgb == to_display(expose(r.linear, post), ToneMap::reinhard).rgb);
+}
+
+TEST_CASE("frame composer depth and normal views", "[view][composer]") {
+    RenderResult r = two_pixel_frame();
+    ViewOptions o;
+    o.view = ViewKind::depth;
+    Image d = compose_view(r, {}, o);
+    CHECK(d.rgb[0] > d.rgb[3]);  // nearer is brighter
+    r.aovs.depth[1] = std::numeric_limits<float>::infinity();
+    d = compose_view(r, {}, o);
+    CHECK(d.rgb[3] == 0.0f);  // a miss is black
+    o.view = ViewKind::normal;
+    Image n = compose_view(r, {}, o);
+    CHECK(n.rgb == std::vector<float>{0.5f, 0.5f, 1.0f, 0.5f, 1.0f, 0.5f});
+    o.view = ViewKind::photon_density;
+    Image p = compose_view(r, {100.0f, 0.0f}, o);
+    CHECK(p.rgb[0] + p.rgb[1] + p.rgb[2] > 0.0f);
+    CHECK(p.rgb[3] + p.rgb[4] + p.rgb[5] == 0.0f);  // no photons: black
+}
+
+TEST_CASE("frame composer scales previews by pixel replication and rounds to 8 bits", "[view][composer]") {
+    Image small(2, 1);
+    small.rgb = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+    Image big = resize_nearest(small, 4, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x)
+            CHECK(big.rgb[(static_cast<std::size_t>(y) * 4 + x) * 3] == (x < 2 ? 0.1f : 0.4f));
+    std::vector<unsigned char> bytes;
+    Image edge(1, 1);
+    edge.rgb = {-1.0f, 0.5f, std::numeric_limits<float>::quiet_NaN()};
+    to_rgb8(edge, bytes);
+    CHECK(bytes == std::vector<unsigned char>{0, 128, 0});
+    CHECK(heat_color(0.0f) == glm::vec3(0.0f));
+    CHECK(heat_color(1.0f) == glm::vec3(1.0f));
+}

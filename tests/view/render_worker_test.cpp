@@ -1,0 +1,94 @@
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <thread>
+
+#include "runtime/render/renderer.h"
+#include "runtime/view/render_worker.h"
+#include "tests/runtime/hand_built_scene.h"
+
+using namespace kdpm;
+
+namespace {
+
+// A lit floor seen from above.
+test::HandBuiltScene floor_scene() {
+    test::HandBuiltScene s;
+    const auto white = s.add_material(glm::vec3(0.8f));
+    s.add_quad(glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), white);
+    s.add_parallelogram_light(glm::vec3(-0.2f, 2, -0.2f), glm::vec3(0.4f, 0, 0), glm::vec3(0, 0, 0.4f),
+                              glm::vec3(5.0f));
+    s.set_camera(glm::vec3(0, 3, 0.01f), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), 60.0f, 32, 32);
+    return s;
+}
+
+FrameJob job(std::uint64_t generation, std::uint32_t size, std::uint32_t spp) {
+    FrameJob j;
+    j.generation = generation;
+    j.settings.width = j.settings.height = size;
+    j.settings.spp = spp;
+    j.settings.mode = RenderMode::direct;
+    return j;
+}
+
+}  // namespace
+
+TEST_CASE("render worker delivers the frame it was given", "[view][worker]") {
+    auto scene = floor_scene();
+    Renderer renderer(scene.views(), BackendKind::cpu);
+    RenderWorker worker(renderer, PhotonMapView{});
+    worker.submit(job(1, 32, 2));
+    FinishedFrame f = worker.wait();
+    CHECK(f.error.empty());
+    CHECK(f.job.generation == 1);
+    CHECK(f.result.linear.width == 32);
+    // Same as rendering directly: the worker adds nothing of its own.
+    RenderSettings s = job(1, 32, 2).settings;
+    RenderResult direct = renderer.render(s);
+    CHECK(f.result.linear.rgb == direct.linear.rgb);
+    CHECK_FALSE(worker.take());
+}
+
+TEST_CASE("render worker cancels a stale frame when a newer one is submitted", "[view][worker]") {
+    auto scene = floor_scene();
+    Renderer renderer(scene.views(), BackendKind::cpu);
+    RenderWorker worker(renderer, PhotonMapView{});
+    // Thousands of samples: finishing this frame would take minutes, so the newer frame can only
+    // arrive first if the stale one is abandoned at a sample boundary.
+    worker.submit(job(1, 256, 4096));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    worker.submit(job(2, 16, 1));
+    FinishedFrame f = worker.wait();
+    CHECK(f.job.generation == 2);
+    CHECK(f.result.linear.width == 16);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    CHECK_FALSE(worker.take());
+}
+
+TEST_CASE("render worker lets a preview in flight finish", "[view][worker]") {
+    auto scene = floor_scene();
+    Renderer renderer(scene.views(), BackendKind::cpu);
+    RenderWorker worker(renderer, PhotonMapView{});
+    FrameJob preview = job(1, 128, 32);
+    preview.preview = true;
+    worker.submit(preview);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    worker.submit(job(2, 16, 1));
+    // The preview is the newest picture while the camera moves: it arrives, then the newer frame.
+    FinishedFrame first = worker.wait();
+    CHECK(first.job.generation == 1);
+    CHECK(first.result.linear.width == 128);
+    FinishedFrame second = worker.wait();
+    CHECK(second.job.generation == 2);
+}
+
+TEST_CASE("render worker reports a render error as text", "[view][worker]") {
+    auto scene = floor_scene();
+    Renderer renderer(scene.views(), BackendKind::cpu);
+    RenderWorker worker(renderer, PhotonMapView{});
+    FrameJob j = job(1, 16, 1);
+    j.settings.mode = RenderMode::photons;  // no photon map
+    worker.submit(j);
+    FinishedFrame f = worker.wait();
+    CHECK(f.error.find("photon map") != std::string::npos);
+}

@@ -1,0 +1,64 @@
+#include <catch2/catch.hpp>
+
+#include "runtime/view/view_options.h"
+
+using namespace kdpm;
+
+TEST_CASE("view options keep k within 2 to 256 when halving and doubling", "[view][options]") {
+    ViewOptions o;
+    o.k = 64;
+    o.double_k();
+    CHECK(o.k == 128);
+    o.double_k();
+    o.double_k();
+    CHECK(o.k == 256);
+    o.k = 3;
+    o.halve_k();
+    CHECK(o.k == 2);
+    o.halve_k();
+    CHECK(o.k == 2);
+    CHECK(clamp_k(0) == 2);
+    CHECK(clamp_k(1000) == 256);
+}
+
+TEST_CASE("view options offer photon modes and the density view only with a photon map", "[view][options]") {
+    ViewOptions o;
+    o.mode = RenderMode::direct;
+    o.next_mode(false);
+    CHECK(o.mode == RenderMode::direct);
+    o.next_mode(true);
+    CHECK(o.mode == RenderMode::photons);
+    o.next_mode(true);
+    CHECK(o.mode == RenderMode::direct_photons);
+    o.next_mode(true);
+    CHECK(o.mode == RenderMode::direct);
+
+    o.view = ViewKind::shaded;
+    o.next_view(false);
+    o.next_view(false);
+    CHECK(o.view == ViewKind::normal);
+    o.next_view(false);
+    CHECK(o.view == ViewKind::shaded);
+    o.view = ViewKind::normal;
+    o.next_view(true);
+    CHECK(o.view == ViewKind::photon_density);
+    o.next_view(true);
+    CHECK(o.view == ViewKind::shaded);
+}
+
+TEST_CASE("view options cycle tone mappers and bound the exposure", "[view][options]") {
+    ViewOptions o;
+    o.next_tone_map();
+    CHECK(o.tone_map == ToneMap::reinhard);
+    o.next_tone_map();
+    CHECK(o.tone_map == ToneMap::none);
+    o.next_tone_map();
+    CHECK(o.tone_map == ToneMap::aces);
+    for (int i = 0; i < 100; ++i) o.brighter();
+    CHECK(o.exposure_stops == 16.0f);
+    o.darker();
+    CHECK(o.exposure_stops == 15.5f);
+    CHECK(parse_view("density") == ViewKind::photon_density);
+    CHECK_THROWS_AS(parse_view("sideways"), std::invalid_argument);
+    CHECK(key_help_text().find("F12") != std::string::npos);
+}

@@ -1,0 +1,82 @@
+// kdpm-bench: the report's performance table on this machine, with its figures and the peers'
+// (Embree, nanoflann) beside kdpm's, for the Cornell box and the shared Sponza and Conference.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+#include "tools/bench/bench_report.h"
+#include "tools/bench/scene_bench.h"
+#include "tools/cli/args.h"
+#include "tools/cli/run_tool.h"
+
+using namespace kdpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path repository_root(const char* argv0) {
+    // The tool lives in build/bin; scene cards are in the repository's scenes/.
+    std::error_code ec;
+    fs::path exe = fs::canonical("/proc/self/exe", ec);
+    if (ec) exe = fs::absolute(argv0);
+    return exe.parent_path().parent_path().parent_path();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool markdown = false, quiet = false, no_peers = false, quick = false;
+    int frames = 3, photons = 262144, size = 512;
+    std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
+    cli::Args args("kdpm-bench", "Reproduces the report's timing table on this machine, with peers in the same run.");
+    args.flag("markdown", &markdown, "print Markdown tables")
+        .option("scenes", &scenes_arg, "LIST", "comma-separated: cornell-box,sponza,conference (default all found)")
+        .option("frames", &frames, "N", "frames (and builds) per median (default 3)", 1, 100)
+        .option("photons", &photons, "N", "photons emitted (default 262144, as the report)", 1, 1 << 26)
+        .option("size", &size, "N", "image width and height (default 512)", 8, 4096)
+        .option("repo", &scenes_root, "DIR", "repository root holding scenes/ (default: found from the executable)")
+        .option("work", &work, "DIR", "where the .kdg/.kdp files go (default: a temporary folder)")
+        .flag("no-peers", &no_peers, "skip Embree and nanoflann")
+        .flag("quick", &quick, "k = 2, 32, 256 only")
+        .flag("quiet", &quiet, "no progress lines on stderr");
+    args.parse(argc, argv);
+    return cli::run_tool("kdpm-bench", [&] {
+        fs::path root = scenes_root.empty() ? repository_root(argv[0]) : fs::path(scenes_root);
+        fs::path dir = work.empty() ? fs::temp_directory_path() / ("kdpm-bench-" + std::to_string(::getpid())) : fs::path(work);
+        fs::create_directories(dir);
+        const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+        std::vector<bench::SceneBenchResult> results;
+        std::string name;
+        std::stringstream list(scenes_arg);
+        while (std::getline(list, name, ',')) {
+            fs::path card = root / "scenes" / name / (name + ".json");
+            if (!fs::exists(card)) throw std::runtime_error("no scene card " + card.string());
+            bench::SceneBenchConfig c;
+            c.name = name;
+            c.card = card;
+            c.work_dir = dir;
+            c.threads = all > 1 ? std::vector<int>{1, all} : std::vector<int>{1};
+            c.ks = quick ? std::vector<int>{2, 32, 256} : std::vector<int>{2, 4, 8, 16, 32, 64, 128, 256};
+            c.frames = frames;
+            c.width = c.height = static_cast<std::uint32_t>(size);
+            c.photons = static_cast<std::uint32_t>(photons);
+            c.peers = !no_peers;
+            c.quiet = quiet;
+            try {
+                results.push_back(bench::run_scene_bench(c));
+            } catch (const std::exception& e) {
+                // A shared scene that is absent is skipped with a message; the shipped one must work.
+                if (name == "cornell-box") throw;
+                std::fprintf(stderr, "kdpm-bench: skipping %s: %s\n", name.c_str(), e.what());
+            }
+        }
+        if (work.empty()) fs::remove_all(dir);
+        std::cout << bench::format_report(results, markdown);
+        return 0;
+    });
+}

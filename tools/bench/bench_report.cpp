@@ -1,0 +1,176 @@
+#include "tools/bench/bench_report.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+#include "tools/bench/report_reference.h"
+
+namespace kdpm::bench {
+namespace {
+
+std::string fmt(const char* f, ...) {
+    char buf[512];
+    va_list args;
+    va_start(args, f);
+    std::vsnprintf(buf, sizeof buf, f, args);
+    va_end(args);
+    return buf;
+}
+
+// A table printed as Markdown or as aligned text.
+struct Table {
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string>> rows;
+
+    std::string render(bool markdown) const {
+        std::vector<std::size_t> width(header.size(), 0);
+        auto widen = [&](const std::vector<std::string>& r) {
+            for (std::size_t i = 0; i < r.size() && i < width.size(); ++i) width[i] = std::max(width[i], r[i].size());
+        };
+        widen(header);
+        for (const auto& r : rows) widen(r);
+        std::string out;
+        auto line = [&](const std::vector<std::string>& r) {
+            out += markdown ? "|" : "";
+            for (std::size_t i = 0; i < width.size(); ++i) {
+                std::string cell = i < r.size() ? r[i] : "";
+                if (markdown) {
+                    out += " " + cell + " |";
+                } else {
+                    std::string pad(width[i] - cell.size(), ' ');
+                    out += (i == 0 ? cell + pad : pad + cell) + "  ";
+                }
+            }
+            out += "\n";
+        };
+        line(header);
+        if (markdown) {
+            out += "|";
+            for (std::size_t i = 0; i < width.size(); ++i) out += i == 0 ? "---|" : "---:|";
+            out += "\n";
+        }
+        for (const auto& r : rows) line(r);
+        return out;
+    }
+};
+
+std::string ms(double v) { return v <= 0 ? "-" : v < 10 ? fmt("%.2f", v) : fmt("%.1f", v); }
+std::string ratio(double a, double b) { return (a <= 0 || b <= 0) ? "-" : fmt("%.2fx", a / b); }
+std::string verdict(bool met) { return met ? "met" : "MISSED"; }
+
+std::string offline_table(const SceneBenchResult& r, bool md) {
+    Table t{{"offline stage", "value"}, {}};
+    t.rows.push_back({"triangles", fmt("%llu", (unsigned long long)r.triangles)});
+    for (auto [threads, v] : r.geometry_build_ms) t.rows.push_back({fmt("geometry kd-tree build, %d thr (ms)", threads), ms(v)});
+    t.rows.push_back({"photons emitted / stored", fmt("%llu / %llu", (unsigned long long)r.photons_emitted,
+                                                      (unsigned long long)r.photons_stored)});
+    for (auto [threads, v] : r.shoot_ms) t.rows.push_back({fmt("photon shooting, %d thr (ms)", threads), ms(v)});
+    for (auto [threads, v] : r.photon_tree_ms) t.rows.push_back({fmt("photon VVH trees build, %d thr (ms)", threads), ms(v)});
+    t.rows.push_back({"photon balanced trees build, all thr (ms)", ms(r.balanced_tree_ms)});
+    t.rows.push_back({"load .kdg + .kdp until first frame (ms)", ms(r.load_ms)});
+    t.rows.push_back({".kdg bytes per triangle (file = RAM, mapped)", fmt("%.1f", r.triangles ? double(r.kdg_bytes) / r.triangles : 0.0)});
+    t.rows.push_back({".kdp bytes per stored photon (file = RAM, mapped)",
+                      fmt("%.1f", r.photons_stored ? double(r.kdp_bytes) / r.photons_stored : 0.0)});
+    return t.render(md);
+}
+
+std::string frame_table(const SceneBenchResult& r, bool md) {
+    auto report = report_figures(r.name);
+    Table t;
+    t.header = {"512x512 frame (ms)"};
+    if (report) t.header.push_back("report GTX 275");
+    for (const auto& f : r.frames) t.header.push_back("kdpm " + f.label);
+    if (report && !r.frames.empty()) t.header.push_back("best / report");
+    auto add_row = [&](const std::string& name, std::optional<double> ref, auto value_of) {
+        std::vector<std::string> row{name};
+        if (report) row.push_back(ref ? ms(*ref) : "-");
+        double best = 0;
+        for (const auto& f : r.frames) {
+            double v = value_of(f);
+            row.push_back(ms(v));
+            if (v > 0 && (best == 0 || v < best)) best = v;
+        }
+        if (report && !r.frames.empty()) row.push_back(ref ? ratio(best, *ref) : "-");
+        t.rows.push_back(row);
+    };
+    add_row("ray tracing", report ? std::optional<double>(report->ray_tracing_ms) : std::nullopt,
+            [](const FrameTable& f) { return f.ray_tracing_ms; });
+    if (!r.frames.empty())
+        for (auto [k, unused] : r.frames.front().with_gather_ms) {
+            (void)unused;
+            std::optional<double> ref;
+            if (report)
+                for (std::size_t i = 0; i < kReportK.size(); ++i)
+                    if (kReportK[i] == k) ref = report->ray_tracing_and_gather_ms[i];
+            add_row(fmt("ray tracing + gather k=%d", k), ref, [k = k](const FrameTable& f) {
+                auto it = f.with_gather_ms.find(k);
+                return it == f.with_gather_ms.end() ? 0.0 : it->second;
+            });
+        }
+    std::string out = t.render(md);
+    if (!r.cuda_note.empty()) out += (md ? "\n" : "") + r.cuda_note + ": GPU rows skipped\n";
+    return out;
+}
+
+std::string peer_table(const SceneBenchResult& r, bool md) {
+    const PeerFigures& p = r.peers;
+    Table t{{"same inputs, all threads", "kdpm (ms)", "peer (ms)", "kdpm / peer", "target", "verdict"}, {}};
+    if (p.embree) {
+        t.rows.push_back({"tree build vs Embree HQ BVH", ms(p.kdpm_build_ms), ms(p.embree_build_ms),
+                          ratio(p.kdpm_build_ms, p.embree_build_ms), "<= 3", verdict(p.kdpm_build_ms <= 3 * p.embree_build_ms)});
+        t.rows.push_back({fmt("primary rays vs rtcIntersect1 (%.4f same hit)", p.ray_agreement), ms(p.kdpm_rays_ms),
+                          ms(p.embree_rays_ms), ratio(p.kdpm_rays_ms, p.embree_rays_ms), "<= 1.25",
+                          verdict(p.kdpm_rays_ms <= 1.25 * p.embree_rays_ms)});
+    } else {
+        t.rows.push_back({"primary rays (Embree not installed)", ms(p.kdpm_rays_ms), "-", "-", "", ""});
+    }
+    for (auto [k, ours] : p.kdpm_knn_ms) {
+        auto it = p.nanoflann_knn_ms.find(k);
+        double theirs = it == p.nanoflann_knn_ms.end() ? 0.0 : it->second;
+        bool target = k == 32 && theirs > 0;
+        t.rows.push_back({fmt("kNN k=%d at %llu primary hits vs nanoflann", k, (unsigned long long)r.primary_hits),
+                          ms(ours), ms(theirs), ratio(ours, theirs), target ? "<= 0.6" : "",
+                          target ? verdict(ours <= 0.6 * theirs) : ""});
+    }
+    std::string out = t.render(md);
+    if (p.nanoflann) out += fmt("%skNN cross-check: %.4f of queries have nanoflann's k-th distance\n", md ? "\n" : "", p.knn_agreement);
+    return out;
+}
+
+std::string target_lines(const SceneBenchResult& r) {
+    std::string out;
+    double rebuild = 0;
+    if (!r.geometry_build_ms.empty()) rebuild += r.geometry_build_ms.rbegin()->second;
+    if (!r.photon_tree_ms.empty()) rebuild += r.photon_tree_ms.rbegin()->second;
+    if (rebuild > 0)
+        out += fmt("- load / rebuild of both trees: %.4f (target <= 0.05): %s\n", r.load_ms / rebuild,
+                   verdict(r.load_ms <= 0.05 * rebuild).c_str());
+    if (r.name == "sponza") {
+        for (const auto& f : r.frames) {
+            auto it = f.with_gather_ms.find(32);
+            if (it != f.with_gather_ms.end() && f.label != "CUDA")
+                out += fmt("- ray tracing + k=32 gather, %s: %.1f ms (target <= 121 ms, the report's GPU): %s\n",
+                           f.label.c_str(), it->second, verdict(it->second <= 121.0).c_str());
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string format_report(const std::vector<SceneBenchResult>& results, bool md) {
+    std::string out;
+    for (const auto& r : results) {
+        out += md ? "\n### " + r.name + "\n\n" : "\n== " + r.name + " ==\n";
+        out += offline_table(r, md);
+        out += "\n";
+        out += frame_table(r, md);
+        out += "\n";
+        out += peer_table(r, md);
+        out += "\n";
+        out += target_lines(r);
+    }
+    return out;
+}
+
+}  // namespace kdpm::bench

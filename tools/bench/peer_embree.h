@@ -1,0 +1,36 @@
+#pragma once
+// Embree 3, a peer for kdpm-bench only (never linked by the toolchain or runtime): its
+// high-quality BVH build and rtcIntersect1 over the same triangles and rays as kdpm.
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace kdpm::bench {
+
+struct PeerRay {
+    float origin[3];
+    float direction[3];
+};
+
+struct PeerHit {
+    float t;                  // +inf for a miss
+    std::uint32_t triangle;   // index into the triangle list, 0xffffffff for a miss
+};
+
+class EmbreePeer {
+public:
+    // vertices: 9 floats per triangle (v0, v1, v2). threads: Embree's worker count.
+    EmbreePeer(std::span<const float> triangle_vertices, int threads);
+    ~EmbreePeer();
+    double build_ms();  // builds (again) with RTC_BUILD_QUALITY_HIGH and returns the time
+    // Traces one ray per element with rtcIntersect1, in parallel over `threads` (oneTBB).
+    void intersect(std::span<const PeerRay> rays, std::span<PeerHit> hits) const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+bool embree_available();
+
+}  // namespace kdpm::bench

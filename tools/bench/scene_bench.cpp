@@ -1,0 +1,247 @@
+#include "tools/bench/scene_bench.h"
+
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+#include "builders/geometry/geometry_file_builder.h"
+#include "builders/geometry/scene_card.h"
+#include "builders/photons/photon_map_writer.h"
+#include "runtime/backend/backend_kind.h"
+#include "runtime/backend/cpu_parallel_for.h"
+#include "runtime/backend/thread_limit.h"
+#include "runtime/geometry/geometry_file.h"
+#include "runtime/geometry/kd_traversal.h"
+#include "runtime/photons/knn_search.h"
+#include "runtime/photons/photon_map_file.h"
+#include "runtime/photons/photon_shooter.h"
+#include "runtime/render/camera.h"
+#include "runtime/render/renderer.h"
+#include "runtime/render/scene_loader.h"
+#include "tools/bench/median_time.h"
+#include "tools/bench/peer_embree.h"
+#include "tools/bench/peer_nanoflann.h"
+
+namespace kdpm::bench {
+namespace {
+
+void say(const SceneBenchConfig& c, const std::string& what) {
+    if (!c.quiet) std::fprintf(stderr, "  [%s] %s\n", c.name.c_str(), what.c_str());
+}
+
+std::string thread_label(int t) { return std::to_string(t) + (t == 1 ? " thread" : " threads"); }
+
+// The report's frame table on one backend: ray tracing alone (the trace stage of every frame)
+// and ray tracing + gather for each k.
+FrameTable measure_frames(const SceneBenchConfig& c, Renderer& renderer, std::string label) {
+    FrameTable table;
+    table.label = std::move(label);
+    std::vector<double> trace;
+    for (int k : c.ks) {
+        std::vector<double> with_gather;
+        RenderSettings s;
+        s.width = c.width;
+        s.height = c.height;
+        s.mode = RenderMode::photons;
+        s.k = static_cast<std::uint32_t>(k);
+        renderer.render(s);  // warm-up: caches, device buffers
+        for (int f = 0; f < c.frames; ++f) {
+            RenderResult r = renderer.render(s);
+            trace.push_back(r.times.ray_tracing_ms);
+            with_gather.push_back(r.times.ray_tracing_ms + r.times.photon_gather_ms);
+        }
+        table.with_gather_ms[k] = median_of(with_gather);
+    }
+    table.ray_tracing_ms = median_of(trace);
+    return table;
+}
+
+struct PrimaryRays {
+    std::vector<PeerRay> rays;
+    std::vector<Hit> hits;
+    std::vector<float> hit_points;  // 3 floats per ray that hit something
+};
+
+PrimaryRays primary_rays(const GeometryFile& g, std::uint32_t width, std::uint32_t height) {
+    PrimaryRays p;
+    auto cam = PinholeCamera::from_record(g.camera(), width, height, 1);
+    p.rays.resize(static_cast<std::size_t>(width) * height);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            CameraRay r = cam.ray(x, y, 0);
+            p.rays[y * width + x] = {{r.origin.x, r.origin.y, r.origin.z}, {r.direction.x, r.direction.y, r.direction.z}};
+        }
+    return p;
+}
+
+double trace_with_kdpm(const GeometryView& g, PrimaryRays& p) {
+    p.hits.resize(p.rays.size());
+    return median_ms(1, [&] {
+        cpu_parallel_for(p.rays.size(), [&](std::uint64_t i) {
+            const PeerRay& r = p.rays[i];
+            Ray ray{glm::vec3(r.origin[0], r.origin[1], r.origin[2]), 0.0f,
+                    glm::vec3(r.direction[0], r.direction[1], r.direction[2]), INFINITY};
+            p.hits[i] = closest_hit(g, ray);
+        }, 256);
+    });
+}
+
+void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, const PhotonMapView& photons,
+                   SceneBenchResult& out) {
+    PeerFigures& peers = out.peers;
+    PrimaryRays p = primary_rays(geometry, c.width, c.height);
+    const GeometryView& g = geometry.view();
+
+    // Our rays: median of several passes over the same rays.
+    std::vector<double> ours;
+    for (int f = 0; f < c.frames + 1; ++f) ours.push_back(trace_with_kdpm(g, p));
+    ours.erase(ours.begin());  // warm-up
+    peers.kdpm_rays_ms = median_of(ours);
+    for (std::size_t i = 0; i < p.rays.size(); ++i)
+        if (p.hits[i].found()) {
+            const PeerRay& r = p.rays[i];
+            for (int a = 0; a < 3; ++a) p.hit_points.push_back(r.origin[a] + p.hits[i].t * r.direction[a]);
+        }
+    out.primary_hits = p.hit_points.size() / 3;
+
+#ifdef KDPM_HAVE_EMBREE
+    {
+        say(c, "Embree: high-quality BVH build and rtcIntersect1");
+        std::vector<float> vertices;
+        vertices.reserve(g.triangle_count * 9);
+        for (std::uint32_t t = 0; t < g.triangle_count; ++t) {
+            const TriangleRecord& tr = g.triangles[t];
+            for (int a = 0; a < 3; ++a) vertices.push_back(tr.v0[a]);
+            for (int a = 0; a < 3; ++a) vertices.push_back(tr.v0[a] + tr.e1[a]);
+            for (int a = 0; a < 3; ++a) vertices.push_back(tr.v0[a] + tr.e2[a]);
+        }
+        EmbreePeer embree(vertices, static_cast<int>(std::thread::hardware_concurrency()));
+        std::vector<double> builds;
+        for (int f = 0; f < c.frames; ++f) builds.push_back(embree.build_ms());
+        peers.embree_build_ms = median_of(builds);
+        std::vector<PeerHit> hits(p.rays.size());
+        embree.intersect(p.rays, hits);  // warm-up
+        peers.embree_rays_ms = median_ms(c.frames, [&] { embree.intersect(p.rays, hits); });
+        std::size_t same = 0;
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            bool ours_hit = p.hits[i].found(), theirs_hit = hits[i].triangle != 0xffffffffu;
+            if (ours_hit == theirs_hit &&
+                (!ours_hit || p.hits[i].triangle == hits[i].triangle ||
+                 std::fabs(p.hits[i].t - hits[i].t) <= 1e-4f * std::max(1.0f, hits[i].t)))
+                ++same;
+        }
+        peers.ray_agreement = hits.empty() ? 1.0 : static_cast<double>(same) / hits.size();
+        peers.embree = true;
+    }
+#endif
+
+    // kNN at the primary hit points: ours and (when present) nanoflann's, same photons.
+    const std::size_t queries = p.hit_points.size() / 3;
+    std::vector<float> ours_kth(queries), theirs_kth(queries);
+    auto run_ours = [&](int k) {
+        cpu_parallel_for(queries, [&](std::uint64_t q) {
+            KnnHeap heap;
+            glm::vec3 point(p.hit_points[3 * q], p.hit_points[3 * q + 1], p.hit_points[3 * q + 2]);
+            std::uint32_t n = knn_search(photons, point, static_cast<std::uint32_t>(k), 0.0f, EuclideanMetric{},
+                                         AcceptAll{}, heap);
+            ours_kth[q] = n ? heap.d2[0] : 0.0f;
+        }, 64);
+    };
+    for (int k : c.ks) {
+        run_ours(k);
+        peers.kdpm_knn_ms[k] = median_ms(c.frames, [&] { run_ours(k); });
+    }
+#ifdef KDPM_HAVE_NANOFLANN
+    if (photons.photon_count > 0) {
+        say(c, "nanoflann: k-nearest queries at the same points");
+        NanoflannPeer nano({photons.x, photons.photon_count}, {photons.y, photons.photon_count},
+                           {photons.z, photons.photon_count});
+        for (int k : c.ks) {
+            nano.knn(p.hit_points, k, theirs_kth);
+            peers.nanoflann_knn_ms[k] = median_ms(c.frames, [&] { nano.knn(p.hit_points, k, theirs_kth); });
+        }
+        // Cross-check on the last k: the k-th nearest distance must agree.
+        run_ours(c.ks.back());
+        std::size_t same = 0;
+        for (std::size_t q = 0; q < queries; ++q)
+            if (std::fabs(ours_kth[q] - theirs_kth[q]) <= 1e-5f * std::max(1e-12f, theirs_kth[q])) ++same;
+        peers.knn_agreement = queries ? static_cast<double>(same) / queries : 1.0;
+        peers.nanoflann = true;
+    }
+#endif
+}
+
+}  // namespace
+
+SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
+    SceneBenchResult out;
+    out.name = c.name;
+    const auto kdg = c.work_dir / (c.name + ".kdg");
+    const auto kdp = c.work_dir / (c.name + ".kdp");
+
+    say(c, "importing " + c.card.string());
+    Scene scene = load_scene_input(c.card);
+    out.triangles = scene.triangles.size();
+    KdBuildParams params;
+
+    for (int t : c.threads) {
+        say(c, "geometry kd-tree build, " + thread_label(t));
+        ThreadLimit limit(t);
+        out.geometry_build_ms[t] = median_ms(c.frames, [&] { (void)build_geometry_file(scene, params); });
+    }
+    build_geometry_file(scene, params).writer.write(kdg);
+    out.kdg_bytes = std::filesystem::file_size(kdg);
+    GeometryFile geometry = GeometryFile::open(kdg);
+
+    ShootOptions shoot;
+    shoot.photons = c.photons;
+    shoot.max_bounces = c.bounces;
+    ShotPhotons shot;
+    for (int t : c.threads) {
+        say(c, "photon shooting, " + thread_label(t));
+        ThreadLimit limit(t);
+        out.shoot_ms[t] = median_ms(1, [&] { shot = shoot_photons(geometry.view(), shoot); });
+    }
+    out.photons_emitted = shot.info.emitted_count;
+    out.photons_stored = shot.hits.size();
+
+    PhotonHitSet set{shot.info, std::move(shot.hits)};
+    PhotonTreeOptions vvh;
+    for (int t : c.threads) {
+        say(c, "photon kd-tree build (VVH), " + thread_label(t));
+        ThreadLimit limit(t);
+        out.photon_tree_ms[t] = median_ms(c.frames, [&] { (void)build_photon_map_file(set, vvh, {}); });
+    }
+    PhotonTreeOptions balanced;
+    balanced.builder = PhotonTreeBuilder::balanced;
+    out.balanced_tree_ms = median_ms(c.frames, [&] { (void)build_photon_map_file(set, balanced, {}); });
+    build_photon_map_file(set, vvh, {}).writer.write(kdp);
+    out.kdp_bytes = std::filesystem::file_size(kdp);
+
+    say(c, "loading the files");
+    out.load_ms = median_ms(c.frames, [&] { (void)LoadedScene::load(kdg, kdp); });
+    LoadedScene loaded = LoadedScene::load(kdg, kdp);
+
+    for (int t : c.threads) {
+        say(c, "frames, " + thread_label(t));
+        ThreadLimit limit(t);
+        Renderer renderer(loaded.views(), BackendKind::cpu);
+        out.frames.push_back(measure_frames(c, renderer, thread_label(t)));
+    }
+    if (c.cuda) {
+        try {
+            BackendSelection sel = select_backend(BackendRequest::cuda);
+            say(c, "frames, CUDA");
+            Renderer renderer(loaded.views(), sel.kind);
+            out.frames.push_back(measure_frames(c, renderer, "CUDA"));
+        } catch (const std::exception& e) {
+            out.cuda_note = "no CUDA device (" + std::string(e.what()) + ")";
+        }
+    }
+    if (c.peers) compare_peers(c, geometry, loaded.views().photons.global, out);
+    const int all = c.threads.back();
+    out.peers.kdpm_build_ms = out.geometry_build_ms[all];
+    return out;
+}
+
+}  // namespace kdpm::bench

@@ -1,0 +1,59 @@
+#pragma once
+// Everything kdpm-bench measures on one scene: the offline builds, the load, the report's frame
+// table (ray tracing alone and with the k-nearest gather), and the peers on the same inputs.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kdpm::bench {
+
+struct SceneBenchConfig {
+    std::string name;              // "cornell-box", "sponza", "conference"
+    std::filesystem::path card;    // scene card (or mesh)
+    std::filesystem::path work_dir;  // where the .kdg and .kdp are written
+    std::vector<int> threads;      // thread counts to measure (e.g. 1 and all)
+    std::vector<int> ks;           // k values of the gather table
+    int frames = 3;                // frames (or builds) per median
+    std::uint32_t width = 512, height = 512;
+    std::uint32_t photons = 262144, bounces = 4;
+    bool peers = true;
+    bool cuda = true;              // measure the CUDA backend when a device exists
+    bool quiet = false;
+};
+
+// Frame figures for one thread count (or the GPU): medians in ms.
+struct FrameTable {
+    std::string label;                    // "1 thread", "2 threads", "CUDA"
+    double ray_tracing_ms = 0;
+    std::map<int, double> with_gather_ms;  // k -> ray tracing + gather
+};
+
+struct PeerFigures {
+    bool embree = false, nanoflann = false;
+    double embree_build_ms = 0, kdpm_build_ms = 0;        // all threads
+    double embree_rays_ms = 0, kdpm_rays_ms = 0;          // same primary rays, all threads
+    double ray_agreement = 0;                             // fraction of rays with the same hit triangle
+    std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
+    double knn_agreement = 0;                             // fraction of queries with the same k-th distance
+};
+
+struct SceneBenchResult {
+    std::string name;
+    std::uint64_t triangles = 0, photons_emitted = 0, photons_stored = 0, primary_hits = 0;
+    std::map<int, double> geometry_build_ms;   // threads -> median
+    std::map<int, double> shoot_ms;            // threads -> one run (deterministic work)
+    std::map<int, double> photon_tree_ms;      // threads -> median (VVH, both maps)
+    double balanced_tree_ms = 0;               // all threads, for comparison
+    double load_ms = 0;                        // map .kdg + .kdp, until the first frame can start
+    std::uint64_t kdg_bytes = 0, kdp_bytes = 0;
+    std::vector<FrameTable> frames;
+    std::string cuda_note;                     // "no CUDA device" etc.
+    PeerFigures peers;
+};
+
+SceneBenchResult run_scene_bench(const SceneBenchConfig& config);
+
+}  // namespace kdpm::bench

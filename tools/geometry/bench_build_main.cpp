@@ -1,0 +1,69 @@
+// kdpm-bench-build: times the SAH kd-tree build on the shipped Cornell box and the real scenes
+// (../shared/scenes or $KDPM_SCENES), median of several runs. Import time is not included.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/scene_card.h"
+#include "runtime/backend/thread_limit.h"
+#include "tools/cli/args.h"
+#include "tools/cli/run_tool.h"
+
+using namespace kdpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path shared_scenes() {
+    if (const char* env = std::getenv("KDPM_SCENES"); env && *env) return env;
+    return fs::path(KDPM_SOURCE_DIR) / ".." / "shared" / "scenes";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 5, threads = 0;
+    std::string extra;
+    cli::Args args("kdpm-bench-build", "Times the SAH geometry kd-tree build on the shipped and the shared scenes.");
+    args.option("runs", &runs, "N", "builds per scene, the median is printed (default 5)", 1, 1000)
+        .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
+        .positional("INPUT", &extra, "an extra scene card or mesh to time", false);
+    args.parse(argc, argv);
+    return cli::run_tool("kdpm-bench-build", [&] {
+        ThreadLimit limit(threads);
+        std::vector<std::pair<std::string, fs::path>> scenes = {
+            {"cornell-box", fs::path(KDPM_SOURCE_DIR) / "scenes" / "cornell-box" / "cornell-box.json"},
+            {"sponza", shared_scenes() / "sponza" / "sponza.obj"},
+            {"conference", shared_scenes() / "conference" / "conference.obj"}};
+        if (!extra.empty()) scenes.push_back({fs::path(extra).stem().string(), extra});
+        std::printf("%-12s %10s %10s %8s %10s %6s %9s\n", "scene", "triangles", "build ms", "Mtris/s", "nodes",
+                    "depth", "SAH cost");
+        for (const auto& [name, path] : scenes) {
+            std::error_code ec;
+            if (!fs::is_regular_file(path, ec)) {
+                std::printf("%-12s skipped: %s not found (set KDPM_SCENES)\n", name.c_str(), path.string().c_str());
+                continue;
+            }
+            const Scene scene = load_scene_input(path);
+            std::vector<double> ms;
+            KdTree tree;
+            for (int r = 0; r < runs; ++r) {
+                const auto t0 = std::chrono::steady_clock::now();
+                tree = build_sah_kd_tree(scene.triangles, KdBuildParams{});
+                ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            }
+            std::sort(ms.begin(), ms.end());
+            const double median = ms[ms.size() / 2];
+            std::printf("%-12s %10zu %10.1f %8.2f %10llu %6u %9.2f\n", name.c_str(), scene.triangles.size(), median,
+                        static_cast<double>(scene.triangles.size()) / (median * 1e3),
+                        static_cast<unsigned long long>(tree.stats.nodes), tree.stats.max_depth, tree.stats.sah_cost);
+            std::fflush(stdout);
+        }
+        return 0;
+    });
+}

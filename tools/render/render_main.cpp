@@ -1,0 +1,124 @@
+// kdpm-render scene.kdg [scene.kdp] -o out.png|out.exr: renders one frame of a scene with
+// photon mapping on the CPU or a CUDA GPU and prints the per-stage timing table.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "runtime/backend/backend_kind.h"
+#include "runtime/backend/thread_limit.h"
+#include "runtime/render/image_output.h"
+#include "runtime/render/renderer.h"
+#include "runtime/render/scene_loader.h"
+#include "tools/cli/args.h"
+#include "tools/cli/progress.h"
+#include "tools/cli/run_tool.h"
+#include "tools/render/output_shorthand.h"
+
+using namespace kdpm;
+
+namespace {
+
+AovSet parse_aovs(const std::string& text) {
+    AovSet set;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        if (item == "depth") set.depth = true;
+        else if (item == "normal") set.normal = true;
+        else if (item == "position") set.position = true;
+        else if (item == "triangle") set.triangle = true;
+        else if (!item.empty())
+            throw std::invalid_argument("unknown AOV '" + item + "' (expected depth, normal, position, triangle)");
+    }
+    return set;
+}
+
+int run(int argc, char** argv) {
+    std::string geometry_path, photon_path, output;
+    RenderSettings settings;
+    int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, threads = 0;
+    double exposure = 0.0, max_radius = -1.0;
+    bool quiet = false;
+    BackendRequest backend = BackendRequest::automatic;
+
+    cli::Args args("kdpm-render", "Render a frame of a kdpm scene (geometry kd-tree + photon kd-tree) to an image.");
+    args.positional("scene.kdg", &geometry_path, "geometry kd-tree from kdpm-build-geometry")
+        .positional("scene.kdp", &photon_path, "photon kd-tree from kdpm-build-photons (not needed for --mode direct)",
+                    false)
+        .option("output", &output, "FILE", "output image (also -o FILE); format by extension (.png, .exr, ...)")
+        .option("width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
+        .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
+        .option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
+        .option("k", &k, "N", "photons per radiance estimate, at most 256 (default: the scene card's)", 1, 256)
+        .option("max-radius", &max_radius, "R",
+                "photon search limit (default: automatic, 4x the photon map's typical k-radius; 0: none)", 0.0, 1e30)
+        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
+                [&](const std::string& v) { settings.mode = parse_render_mode(v); })
+        .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
+                4096)
+        .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
+        .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
+                [&](const std::string& v) { backend = parse_backend_request(v); })
+        .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
+                [&](const std::string& v) { settings.aovs = parse_aovs(v); })
+        .option("exposure", &exposure, "STOPS", "exposure in stops (default 0)", -32.0, 32.0)
+        .option("tonemap", "reinhard|aces|none", "tone mapping for 8-bit outputs (default aces)",
+                [&](const std::string& v) { settings.post.tone_map = parse_tone_map(v); })
+        .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
+        .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
+        .flag("quiet", &quiet, "print nothing but errors");
+    OutputShorthand shorthand(argc, argv);
+    args.parse(shorthand.argc(), shorthand.argv());
+    if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
+    // Refuse an impossible destination before spending time on the frame.
+    const std::filesystem::path out_folder = std::filesystem::path(output).has_parent_path()
+                                                 ? std::filesystem::path(output).parent_path()
+                                                 : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(out_folder))
+        throw std::runtime_error("cannot write " + output + ": folder " + out_folder.string() + " does not exist");
+    ThreadLimit limit(threads);
+
+    BackendSelection selected = select_backend(backend);
+    if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-render: " << selected.notice << "\n";
+
+    std::optional<std::filesystem::path> photons;
+    if (!photon_path.empty()) photons = photon_path;
+    LoadedScene scene = LoadedScene::load(geometry_path, photons);
+    Renderer renderer(scene.views(), selected.kind);
+
+    settings.width = static_cast<std::uint32_t>(width);
+    settings.height = static_cast<std::uint32_t>(height);
+    settings.spp = static_cast<std::uint32_t>(spp);
+    settings.k = static_cast<std::uint32_t>(k);
+    settings.max_radius = static_cast<float>(max_radius);
+    settings.light_samples = static_cast<std::uint32_t>(light_samples);
+    settings.max_depth = static_cast<std::uint32_t>(max_depth);
+    settings.post.exposure_stops = static_cast<float>(exposure);
+    cli::Progress progress("rendering", quiet);
+    settings.progress = [&](double f) { progress.update(f); };
+
+    RenderResult result = renderer.render(settings);
+    progress.finish();
+
+    FrameOutput frame{&result.exposed, &result.display, &result.aovs, settings.aovs};
+    auto written = write_frame(output, frame);
+
+    if (!quiet) {
+        std::cout << "kdpm-render: " << result.linear.width << "x" << result.linear.height << ", " << settings.spp
+                  << " spp, mode " << render_mode_name(settings.mode) << ", backend " << backend_name(selected.kind)
+                  << "\n";
+        if (renderer.upload_ms() > 0) std::printf("  scene upload %.2f ms\n", renderer.upload_ms());
+        std::cout << format_stage_table(result.times, scene.load_ms());
+        for (const auto& p : written) std::cout << "  wrote " << p.string() << "\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return cli::run_tool("kdpm-render", [&] { return run(argc, argv); });
+}

@@ -34,8 +34,11 @@ void write_file_atomically(const std::filesystem::path& destination,
     auto dir = destination.parent_path();
     if (dir.empty()) dir = ".";
     TempFile tmp;
-    std::string pattern = (dir / ("." + destination.filename().string() + ".tmp-XXXXXX")).string();
-    tmp.path = pattern;
+    // A hidden name beside the destination, so the rename stays on one file system.
+    std::string name = destination.filename().string();
+    name.insert(name.begin(), '.');
+    name.append(".tmp-XXXXXX");
+    tmp.path = (dir / name).string();
     tmp.fd = ::mkstemp(tmp.path.data());
     if (tmp.fd < 0) {
         tmp.path.clear();

@@ -16,13 +16,6 @@
 using namespace kdpm;
 
 int main(int argc, char** argv) {
-    // The shared parser knows long options only; accept the conventional "-o FILE" too.
-    std::vector<std::string> words(argv, argv + argc);
-    for (auto& w : words)
-        if (w == "-o") w = "--output";
-    std::vector<char*> args_v;
-    for (auto& w : words) args_v.push_back(w.data());
-
     std::string input, output;
     bool quiet = false;
     int threads = 0;
@@ -31,7 +24,7 @@ int main(int argc, char** argv) {
     cli::Args args("kdpm-build-geometry",
                    "Builds the SAH geometry kd-tree (.kdg) of a scene card (.json) or a mesh (OBJ, glTF, PLY, ...).");
     args.positional("INPUT", &input, "scene card (.json) or mesh file")
-        .option("output", &output, "FILE", "output .kdg file (also -o FILE)")
+        .option("output", &output, "FILE", "output .kdg file")
         .option("traversal-cost", &traversal, "C", "SAH cost of an inner node step (default 1)", 0.0, 1e6)
         .option("intersection-cost", &intersection, "C", "SAH cost of a ray/triangle test (default 1.5)", 1e-6, 1e6)
         .option("empty-bonus", &bonus, "B", "cost reduction for splits with an empty side, 0..1 (default 0.2)", 0.0, 1.0)
@@ -39,7 +32,8 @@ int main(int argc, char** argv) {
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
         .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
-    args.parse(static_cast<int>(args_v.size()), args_v.data());
+    args.short_name('o', "output");
+    args.parse(argc, argv);
     params.traversal_cost = static_cast<float>(traversal);
     params.intersection_cost = static_cast<float>(intersection);
     params.empty_bonus = static_cast<float>(bonus);

@@ -7,13 +7,12 @@
 
 #include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_tree_builder.h"
-#include "builders/photons/photon_tree_writer.h"
+#include "builders/photons/photon_map_writer.h"
 #include "formats/container_writer.h"
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
-#include "tools/photons/short_options.h"
 
 using namespace kdpm;
 
@@ -24,14 +23,14 @@ int main(int argc, char** argv) {
     double radius = 0.0;
     cli::Args args("kdpm-build-photons", "Builds the photon kd-tree file (.kdp) from photon hits (.kdph).");
     args.positional("PHOTONS.kdph", &input, "photon hits from kdpm-shoot-photons")
-        .option("output", &output, "FILE.kdp", "output file (also -o FILE)")
+        .option("output", &output, "FILE.kdp", "output file")
         .flag("balanced", &balanced, "classic balanced median-split tree instead of VVH")
         .option("leaf-size", &leaf_size, "N", "most photons per leaf (default 16)", 1, 4096)
         .option("radius", &radius, "R", "VVH expected query radius (default: estimated for k = 32)", 0.0, 1e30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");
-    photon_tools::ShortOptions short_o(argc, argv, {{"-o", "output"}});
-    args.parse(short_o.argc(), short_o.argv());
+    args.short_name('o', "output");
+    args.parse(argc, argv);
     return cli::run_tool("kdpm-build-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdp)");
         ThreadLimit limit(threads);
@@ -43,43 +42,25 @@ int main(int argc, char** argv) {
         options.leaf_size = static_cast<std::uint32_t>(leaf_size);
         options.query_radius = static_cast<float>(radius);
         cli::Progress progress("building photon trees", quiet);
-        BuiltPhotonTree global = build_photon_tree(set.hits, options, set.info.emitted_count, set.info.max_bounces);
-        progress.update(0.8);
-        std::vector<PhotonHit> caustic_hits;
-        for (const auto& h : set.hits)
-            if (h.flags & kPhotonCaustic) caustic_hits.push_back(h);
-        BuiltPhotonTree caustic = build_photon_tree(caustic_hits, options, set.info.emitted_count, set.info.max_bounces);
-        progress.finish();
-
-        ContainerWriter writer(FileKind::photon_tree);
-        add_photon_tree_sections(writer, PhotonMapKind::global, global);
-        add_photon_tree_sections(writer, PhotonMapKind::caustic, caustic);
         Metadata meta;
         meta.tool = "kdpm-build-photons";
         meta.tool_version = kdpm_version();
         meta.source_path = std::filesystem::path(input).filename().string();
         meta.source_hash = hash_file(input);
-        meta.parameters["builder"] = balanced ? "balanced" : "vvh";
-        meta.parameters["leaf_size"] = std::to_string(leaf_size);
-        meta.parameters["radius"] = radius > 0.0 ? std::to_string(radius) : "auto";
-        meta.statistics["photons"] = global.info.photon_count;
-        meta.statistics["caustic_photons"] = caustic.info.photon_count;
-        meta.statistics["nodes"] = global.info.node_count;
-        meta.statistics["leaves"] = global.info.leaf_count;
-        meta.statistics["max_depth"] = global.info.max_depth;
-        meta.statistics["query_radius"] = global.info.query_radius;
-        meta.statistics["emitted"] = static_cast<double>(set.info.emitted_count);
-        writer.set_metadata(meta);
-        writer.write(output);
+        PhotonMapBuild built = build_photon_map_file(set, options, meta);
+        progress.finish();
+        const PhotonTreeInfo& global = built.global;
+        const PhotonTreeInfo& caustic = built.caustic;
+        built.writer.write(output);
         double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
         if (!quiet) {
             auto bytes = std::filesystem::file_size(output);
             std::printf("kdpm-build-photons: %u photons (%u caustic), %s, %u nodes, %u leaves, depth %u, "
                         "largest leaf %u, r %.4g, %.2f s, %.1f MiB -> %s\n",
-                        global.info.photon_count, caustic.info.photon_count, balanced ? "balanced" : "VVH",
-                        global.info.node_count, global.info.leaf_count, global.info.max_depth,
-                        global.info.max_leaf_size, global.info.query_radius, secs, bytes / 1048576.0,
+                        global.photon_count, caustic.photon_count, balanced ? "balanced" : "VVH",
+                        global.node_count, global.leaf_count, global.max_depth,
+                        global.max_leaf_size, global.query_radius, secs, bytes / 1048576.0,
                         output.c_str());
         }
         return 0;

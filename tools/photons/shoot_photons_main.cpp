@@ -12,7 +12,6 @@
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
-#include "tools/photons/short_options.h"
 
 using namespace kdpm;
 
@@ -22,14 +21,14 @@ int main(int argc, char** argv) {
     int photons = 0, bounces = -1, threads = 0, seed = 0;
     cli::Args args("kdpm-shoot-photons", "Shoots photons from the area lights of a .kdg scene into a photon hit file (.kdph).");
     args.positional("SCENE.kdg", &input, "geometry file from kdpm-build-geometry")
-        .option("output", &output, "FILE.kdph", "output file (also -o FILE)")
-        .option("photons", &photons, "N", "photon paths to emit (also -n N; default: the scene card's)", 1, 1 << 30)
+        .option("output", &output, "FILE.kdph", "output file")
+        .option("photons", &photons, "N", "photon paths to emit (default: the scene card's)", 1, 1 << 30)
         .option("bounces", &bounces, "B", "most bounces per path (default: the scene card's, else 4)", 0, 255)
         .option("seed", &seed, "S", "random seed (default 0)", 0, 1 << 30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");
-    photon_tools::ShortOptions short_opts(argc, argv, {{"-o", "output"}, {"-n", "photons"}});
-    args.parse(short_opts.argc(), short_opts.argv());
+    args.short_name('o', "output").short_name('n', "photons");
+    args.parse(argc, argv);
     return cli::run_tool("kdpm-shoot-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdph)");
         ThreadLimit limit(threads);

@@ -15,7 +15,6 @@
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
-#include "tools/render/output_shorthand.h"
 
 using namespace kdpm;
 
@@ -48,7 +47,7 @@ int run(int argc, char** argv) {
     args.positional("scene.kdg", &geometry_path, "geometry kd-tree from kdpm-build-geometry")
         .positional("scene.kdp", &photon_path, "photon kd-tree from kdpm-build-photons (not needed for --mode direct)",
                     false)
-        .option("output", &output, "FILE", "output image (also -o FILE); format by extension (.png, .exr, ...)")
+        .option("output", &output, "FILE", "output image, format by extension (.png, .exr, ...)")
         .option("width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
         .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
         .option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
@@ -70,8 +69,8 @@ int run(int argc, char** argv) {
         .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
         .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
-    OutputShorthand shorthand(argc, argv);
-    args.parse(shorthand.argc(), shorthand.argv());
+    args.short_name('o', "output");
+    args.parse(argc, argv);
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
     // Refuse an impossible destination before spending time on the frame.
     const std::filesystem::path out_folder = std::filesystem::path(output).has_parent_path()

@@ -20,24 +20,18 @@ std::string text(double v) {
 
 }  // namespace
 
-GeometryBuild build_geometry_file(const Scene& input, const KdBuildParams& params,
+GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& params,
                                   const std::function<void(double)>& progress) {
-    const Scene* scene = &input;
-    Scene framed;
-    if (!input.has_camera) {
-        framed = input;
-        frame_camera(framed);
-        scene = &framed;
-    }
-    if (!scene->normals.empty() && scene->normals.size() != scene->triangles.size())
-        throw FormatError("scene has " + std::to_string(scene->normals.size()) + " normal records for " +
-                          std::to_string(scene->triangles.size()) + " triangles");
-    if (scene->triangles.size() > 0xfffffffeu) throw FormatError("too many triangles");
-    for (const TriangleRecord& t : scene->triangles)
-        if (t.material >= scene->materials.size()) throw FormatError("triangle material index out of range");
+    if (!scene.normals.empty() && scene.normals.size() != scene.triangles.size())
+        throw FormatError("scene has " + std::to_string(scene.normals.size()) + " normal records for " +
+                          std::to_string(scene.triangles.size()) + " triangles");
+    if (scene.triangles.size() > 0xfffffffeu) throw FormatError("too many triangles");
+    for (const TriangleRecord& t : scene.triangles)
+        if (t.material >= scene.materials.size()) throw FormatError("triangle material index out of range");
 
-    const KdTree tree = build_sah_kd_tree(scene->triangles, params, progress);
-    return GeometryBuild{assemble_geometry_file(*scene, tree, params), tree.stats};
+    const KdTree tree = build_sah_kd_tree(scene.triangles, params, progress);
+    // assemble_geometry_file frames a camera when the scene has none.
+    return GeometryBuild{assemble_geometry_file(scene, tree, params), tree.stats};
 }
 
 ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, const KdBuildParams& params) {

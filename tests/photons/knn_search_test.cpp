@@ -5,7 +5,7 @@
 
 #include "runtime/photons/knn_search.h"
 #include "tests/photons/synthetic_photons.h"
-#include "tests/photons/tree_fixture.h"
+#include "builders/photons/built_tree_view.h"
 
 using namespace kdpm;
 
@@ -30,7 +30,7 @@ void check_knn_against_brute_force(PhotonTreeBuilder builder, std::uint32_t leaf
     options.builder = builder;
     options.leaf_size = leaf_size;
     auto tree = build_photon_tree(set.hits, options);
-    auto view = test::view_of(tree);
+    auto view = view_of(tree);
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(-0.1f, 1.1f);
     static KnnHeap heap;
@@ -72,20 +72,20 @@ TEST_CASE("kNN with a maximum radius keeps only photons inside it", "[photons][k
 TEST_CASE("kNN on an empty map and on a single photon", "[photons][knn]") {
     static KnnHeap heap;
     auto empty = build_photon_tree({}, PhotonTreeOptions{});
-    CHECK(knn_search(test::view_of(empty), glm::vec3(0.0f), 8, 0.0f, heap) == 0);
+    CHECK(knn_search(view_of(empty), glm::vec3(0.0f), 8, 0.0f, heap) == 0);
     PhotonMapView none;
     CHECK(knn_search(none, glm::vec3(0.0f), 8, 0.0f, heap) == 0);
 
     auto set = test::synthetic_photons(1, 3);
     auto one = build_photon_tree(set.hits, PhotonTreeOptions{});
-    REQUIRE(knn_search(test::view_of(one), glm::vec3(2.0f), 8, 0.0f, heap) == 1);
+    REQUIRE(knn_search(view_of(one), glm::vec3(2.0f), 8, 0.0f, heap) == 1);
     CHECK(heap.index[0] == 0);
 }
 
 TEST_CASE("kNN with the disc metric and a filter equals brute force under the same metric", "[photons][knn]") {
     auto set = test::synthetic_photons(6000, 17);
     auto tree = build_photon_tree(set.hits, PhotonTreeOptions{});
-    auto view = test::view_of(tree);
+    auto view = view_of(tree);
     std::mt19937 rng(19);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     static KnnHeap heap;

@@ -3,7 +3,7 @@
 #include <random>
 
 #include "runtime/photons/radiance_estimate.h"
-#include "tests/photons/tree_fixture.h"
+#include "builders/photons/built_tree_view.h"
 
 using namespace kdpm;
 
@@ -44,7 +44,7 @@ TEST_CASE("Radiance estimate of a uniformly lit floor matches albedo E / pi", "[
     static KnnHeap heap;
     for (bool leak : {false, true}) {
         auto tree = build_photon_tree(lit_floor(count, each, leak), PhotonTreeOptions{});
-        auto view = test::view_of(tree);
+        auto view = view_of(tree);
         for (bool cone : {false, true}) {
             RadianceEstimateParams params;
             params.k = 128;
@@ -67,7 +67,7 @@ TEST_CASE("Radiance estimate of a uniformly lit floor matches albedo E / pi", "[
 TEST_CASE("Radiance estimate honours min_bounce and the maximum radius", "[photons][radiance]") {
     const std::uint32_t count = 30000;
     auto tree = build_photon_tree(lit_floor(count, 0.001f, false), PhotonTreeOptions{});
-    auto view = test::view_of(tree);
+    auto view = view_of(tree);
     static KnnHeap heap;
     RadianceEstimateParams all, indirect;
     all.k = indirect.k = 64;

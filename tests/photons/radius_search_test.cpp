@@ -5,7 +5,7 @@
 
 #include "runtime/photons/radius_search.h"
 #include "tests/photons/synthetic_photons.h"
-#include "tests/photons/tree_fixture.h"
+#include "builders/photons/built_tree_view.h"
 
 using namespace kdpm;
 
@@ -15,7 +15,7 @@ TEST_CASE("Fixed-radius search finds exactly the photons brute force finds", "[p
         PhotonTreeOptions options;
         options.builder = builder;
         auto tree = build_photon_tree(set.hits, options);
-        auto view = test::view_of(tree);
+        auto view = view_of(tree);
         std::mt19937 rng(5);
         std::uniform_real_distribution<float> u(-0.1f, 1.1f);
         for (float radius : {0.001f, 0.02f, 0.1f, 0.4f}) {

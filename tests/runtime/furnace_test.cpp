@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 
+#include "builders/photons/built_tree_view.h"
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "runtime/geometry/geometry_file.h"
@@ -24,21 +25,6 @@ void add_quad(Scene& s, glm::vec3 p0, glm::vec3 e1, glm::vec3 e2) {
     // Both triangles keep the winding of (e1, e2), so they face along cross(e1, e2).
     s.triangles.push_back(make_triangle(a, b, c, 0, static_cast<std::uint32_t>(s.triangles.size())));
     s.triangles.push_back(make_triangle(a, c, d, 0, static_cast<std::uint32_t>(s.triangles.size())));
-}
-
-PhotonMapView view_of(const BuiltPhotonTree& t) {
-    PhotonMapView v;
-    v.nodes = t.nodes.data();
-    v.node_count = static_cast<std::uint32_t>(t.nodes.size());
-    v.photon_count = static_cast<std::uint32_t>(t.x.size());
-    v.x = t.x.data();
-    v.y = t.y.data();
-    v.z = t.z.data();
-    v.power = t.power.data();
-    v.directions = t.directions.data();
-    v.flags = t.flags.data();
-    v.emitted_count = t.info.emitted_count;
-    return v;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "builders/photons/built_tree_view.h"
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/geometry/scene_card.h"
 #include "builders/photons/photon_tree_builder.h"
@@ -59,20 +60,6 @@ double queries_per_second(std::size_t n, const Body& body, bool single_thread) {
     auto start = Clock::now();
     cpu_parallel_for(n, body);
     return n / seconds_since(start);
-}
-
-PhotonMapView view_of(const BuiltPhotonTree& t) {
-    PhotonMapView v;
-    v.nodes = t.nodes.data();
-    v.node_count = static_cast<std::uint32_t>(t.nodes.size());
-    v.photon_count = t.info.photon_count;
-    v.x = t.x.data();
-    v.y = t.y.data();
-    v.z = t.z.data();
-    v.power = t.power.data();
-    v.directions = t.directions.data();
-    v.flags = t.flags.data();
-    return v;
 }
 
 struct BenchOptions {

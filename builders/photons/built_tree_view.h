@@ -1,9 +1,10 @@
 #pragma once
-// A photon tree built in memory and exposed as the view the kernels take.
+// The kernels' view of a photon tree still in memory (tests, benchmarks), as PhotonMapFile
+// gives for a mapped .kdp.
 #include "builders/photons/photon_tree_builder.h"
 #include "runtime/photons/photon_map_view.h"
 
-namespace kdpm::test {
+namespace kdpm {
 
 inline PhotonMapView view_of(const BuiltPhotonTree& t) {
     PhotonMapView v;
@@ -20,4 +21,4 @@ inline PhotonMapView view_of(const BuiltPhotonTree& t) {
     return v;
 }
 
-}  // namespace kdpm::test
+}  // namespace kdpm

@@ -7,6 +7,7 @@
 // normal, or that arrived from behind the surface, are skipped, and the search may be
 // flattened toward the surface (DiscMetric).
 #include <cstdint>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
@@ -109,6 +110,22 @@ struct SurfacePhotonFilter {
     }
 };
 
+// decode_rgbe's value with the power of two built from its bits where it is a normal float
+// (exactly ldexpf's result there) instead of a libm call per photon.
+KDPM_HD KDPM_INLINE glm::vec3 photon_power(std::uint32_t rgbe) {
+    const std::uint32_t e = rgbe >> 24;
+    if (e < 10) {  // zero, or a scale 2^(e - 136) below the normal floats
+        float pw[3];
+        decode_rgbe(rgbe, pw);
+        return glm::vec3(pw[0], pw[1], pw[2]);
+    }
+    const std::uint32_t bits = (e - 9) << 23;  // biased exponent (e - 136) + 127
+    float scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return glm::vec3(static_cast<float>(rgbe & 0xffu) * scale, static_cast<float>((rgbe >> 8) & 0xffu) * scale,
+                     static_cast<float>((rgbe >> 16) & 0xffu) * scale);
+}
+
 // `normal`: unit surface normal on the viewer's side; `albedo`: the diffuse reflectance.
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                   glm::vec3 albedo, const RadianceEstimateParams& params,
@@ -129,14 +146,13 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     const float cone_k = params.cone_k < 1.0f ? 1.0f : params.cone_k;
     glm::vec3 flux(0.0f);
     for (std::uint32_t i = 0; i < found; ++i) {
-        float pw[3];
-        decode_rgbe(map.power[heap.index[i]], pw);
+        const glm::vec3 pw = photon_power(map.power[heap.index[i]]);
         float w = 1.0f;
         if (params.cone_filter) {
             w = 1.0f - sqrtf(heap.d2[i]) / (cone_k * r);
             w = w < 0.0f ? 0.0f : w;
         }
-        flux += w * glm::vec3(pw[0], pw[1], pw[2]);
+        flux += w * pw;
     }
     const float norm = params.cone_filter ? 1.0f - 2.0f / (3.0f * cone_k) : 1.0f;
     constexpr float kPi = 3.14159265358979f;

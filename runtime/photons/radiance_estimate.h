@@ -7,6 +7,7 @@
 // normal, or that arrived from behind the surface, are skipped, and the search may be
 // flattened toward the surface (DiscMetric).
 #include <cstdint>
+#include <cstring>
 
 #include <glm/glm.hpp>
 
@@ -34,30 +35,103 @@ struct RadianceEstimate {
 };
 
 // Photons that may light this surface point (see the file comment).
+//
+// Most candidates are decided far from the thresholds, so each test first looks at the folded
+// octahedral vector before normalization (no divisions, no square root): its direction is
+// decode_octahedral's to within ~1e-6, and a decision taken only outside a margin of 1e-4 (sign
+// test) or 1e-3 (cosine test, on squares) is the one the exact decoding takes. Inside the
+// margin, or for an unusual normal or threshold, the exact decoding decides, so the accepted
+// set is exactly that of decoding every photon.
 struct SurfacePhotonFilter {
-    const PhotonMapView* map;
+    const std::uint32_t* flags;
+    const PackedPhotonDirections* directions;
     glm::vec3 normal;
     float min_normal_cos;
     std::uint32_t min_bounce;
     std::uint32_t exclude_flags;
-    KDPM_HD bool operator()(std::uint32_t p) const {
-        const std::uint32_t f = map->flags[p];
-        if ((f & exclude_flags) != 0 || photon_bounce(f) < min_bounce) return false;
+    bool check_flags;  // false when no flag or bounce can reject (skips a load per photon)
+    bool quick;        // the margins hold: |normal| ~ 1 and min_normal_cos in [0.05, 1]
+
+    KDPM_HD SurfacePhotonFilter(const PhotonMapView& map, glm::vec3 n, float min_cos, std::uint32_t min_bounce_,
+                                std::uint32_t exclude)
+        : flags(map.flags), directions(map.directions), normal(n), min_normal_cos(min_cos),
+          min_bounce(min_bounce_), exclude_flags(exclude), check_flags(min_bounce_ > 0 || exclude != 0) {
+        const float n2 = n.x * n.x + n.y * n.y + n.z * n.z;
+        quick = n2 > 0.999f && n2 < 1.001f && (min_cos <= -1.0f || (min_cos >= 0.05f && min_cos <= 1.0f));
+    }
+
+    // The octahedral vector as decode_octahedral folds it, unnormalized (length in [0.57, 1]).
+    KDPM_HD static void unfolded(std::uint32_t packed, float out[3]) {
+        constexpr float kInv = 1.0f / 32767.0f;
+        float u = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed & 0xffffu))) * kInv;
+        float v = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed >> 16))) * kInv;
+        u = u < -1.0f ? -1.0f : u;
+        v = v < -1.0f ? -1.0f : v;
+        const float z = 1.0f - fabsf(u) - fabsf(v);
+        if (z < 0.0f) {
+            const float fu = (1.0f - fabsf(v)) * (u >= 0.0f ? 1.0f : -1.0f);
+            v = (1.0f - fabsf(u)) * (v >= 0.0f ? 1.0f : -1.0f);
+            u = fu;
+        }
+        out[0] = u;
+        out[1] = v;
+        out[2] = z;
+    }
+
+    KDPM_HD bool exact(std::uint32_t p) const {
         float d[3], nn[3];
-        decode_octahedral(map->directions[p].direction, d);
+        decode_octahedral(directions[p].direction, d);
         if (d[0] * normal.x + d[1] * normal.y + d[2] * normal.z >= 0.0f) return false;  // from behind
         if (min_normal_cos <= -1.0f) return true;
-        decode_octahedral(map->directions[p].normal, nn);
+        decode_octahedral(directions[p].normal, nn);
         return nn[0] * normal.x + nn[1] * normal.y + nn[2] * normal.z >= min_normal_cos;
     }
+
+    KDPM_HD bool operator()(std::uint32_t p) const {
+        if (check_flags) {
+            const std::uint32_t f = flags[p];
+            if ((f & exclude_flags) != 0 || photon_bounce(f) < min_bounce) return false;
+        }
+        if (!quick) return exact(p);
+        float r[3];
+        unfolded(directions[p].direction, r);
+        const float s = r[0] * normal.x + r[1] * normal.y + r[2] * normal.z;
+        if (s >= 1e-4f) return false;  // from behind
+        if (s > -1e-4f) return exact(p);
+        if (min_normal_cos <= -1.0f) return true;
+        unfolded(directions[p].normal, r);
+        const float c = r[0] * normal.x + r[1] * normal.y + r[2] * normal.z;
+        if (c <= 0.0f) return false;  // min_normal_cos >= 0.05 here
+        const float l2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+        const float c2 = min_normal_cos * min_normal_cos;
+        if (c * c > (c2 + 1e-3f) * l2) return true;
+        if (c * c < (c2 - 1e-3f) * l2) return false;
+        return exact(p);
+    }
 };
+
+// decode_rgbe's value with the power of two built from its bits where it is a normal float
+// (exactly ldexpf's result there) instead of a libm call per photon.
+KDPM_HD KDPM_INLINE glm::vec3 photon_power(std::uint32_t rgbe) {
+    const std::uint32_t e = rgbe >> 24;
+    if (e < 10) {  // zero, or a scale 2^(e - 136) below the normal floats
+        float pw[3];
+        decode_rgbe(rgbe, pw);
+        return glm::vec3(pw[0], pw[1], pw[2]);
+    }
+    const std::uint32_t bits = (e - 9) << 23;  // biased exponent (e - 136) + 127
+    float scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return glm::vec3(static_cast<float>(rgbe & 0xffu) * scale, static_cast<float>((rgbe >> 8) & 0xffu) * scale,
+                     static_cast<float>((rgbe >> 16) & 0xffu) * scale);
+}
 
 // `normal`: unit surface normal on the viewer's side; `albedo`: the diffuse reflectance.
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                   glm::vec3 albedo, const RadianceEstimateParams& params,
                                                   KnnHeap& heap) {
     RadianceEstimate out;
-    SurfacePhotonFilter filter{&map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags};
+    const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
     std::uint32_t found =
         params.flatten > 0.0f
             ? knn_search(map, position, params.k, params.max_radius, DiscMetric{normal, params.flatten}, filter, heap)
@@ -72,14 +146,13 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     const float cone_k = params.cone_k < 1.0f ? 1.0f : params.cone_k;
     glm::vec3 flux(0.0f);
     for (std::uint32_t i = 0; i < found; ++i) {
-        float pw[3];
-        decode_rgbe(map.power[heap.index[i]], pw);
+        const glm::vec3 pw = photon_power(map.power[heap.index[i]]);
         float w = 1.0f;
         if (params.cone_filter) {
             w = 1.0f - sqrtf(heap.d2[i]) / (cone_k * r);
             w = w < 0.0f ? 0.0f : w;
         }
-        flux += w * glm::vec3(pw[0], pw[1], pw[2]);
+        flux += w * pw;
     }
     const float norm = params.cone_filter ? 1.0f - 2.0f / (3.0f * cone_k) : 1.0f;
     constexpr float kPi = 3.14159265358979f;

@@ -76,7 +76,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightDistributio
         if (plan.gather_photons) {
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
-            dev.launch(slots, gather);
+            dev.launch(pixels, gather);  // one item per pixel, over its vertices
             times.photon_gather_ms += watch.lap_ms();
             report(s, 2);
         }

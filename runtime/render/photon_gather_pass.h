@@ -34,16 +34,22 @@ struct PhotonGatherPass {
     RadianceEstimateParams caustic_params;
     bool use_caustic_map = false;
 
+    // One work item per pixel (tiled order), looping over the pixel's diffuse vertices: most
+    // pixels have one, so launching per vertex slot would mostly start items that do nothing.
     KDPM_HD void operator()(std::uint64_t item) const {
-        const std::uint64_t pixel = tiled_pixel(item / kMaxDiffuseVertices, frame.width, frame.height);
-        const std::uint64_t slot = pixel * kMaxDiffuseVertices + item % kMaxDiffuseVertices;
-        if (item % kMaxDiffuseVertices >= frame.vertex_count[pixel]) return;
-        const DiffuseVertex& v = frame.vertices[slot];
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
+        const std::uint32_t count = frame.vertex_count[pixel];
         KnnHeap heap;
-        glm::vec3 l = estimate_radiance(maps.global, v.position, v.shading_normal, v.albedo, global_params, heap).radiance;
-        if (use_caustic_map && maps.caustic.node_count > 0)
-            l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap).radiance;
-        frame.gathered[slot] = l;
+        for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
+            const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+            const DiffuseVertex& v = frame.vertices[slot];
+            glm::vec3 l =
+                estimate_radiance(maps.global, v.position, v.shading_normal, v.albedo, global_params, heap).radiance;
+            if (use_caustic_map && maps.caustic.node_count > 0)
+                l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
+                         .radiance;
+            frame.gathered[slot] = l;
+        }
     }
 };
 

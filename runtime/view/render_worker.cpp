@@ -66,6 +66,21 @@ bool RenderWorker::idle() const {
     return !busy_ && !pending_;
 }
 
+std::uint64_t RenderWorker::frames_started() const {
+    std::lock_guard lock(mutex_);
+    return started_;
+}
+
+std::uint64_t RenderWorker::frames_completed() const {
+    std::lock_guard lock(mutex_);
+    return completed_;
+}
+
+std::uint64_t RenderWorker::frames_cancelled() const {
+    std::lock_guard lock(mutex_);
+    return cancelled_;
+}
+
 void RenderWorker::loop() {
     for (;;) {
         FrameJob job;
@@ -80,6 +95,7 @@ void RenderWorker::loop() {
             job = std::move(*pending_);
             pending_.reset();
             busy_ = true;
+            ++started_;
             running_group_ = &group;
             running_cancelled_ = false;
             running_preview_ = job.preview;
@@ -110,7 +126,10 @@ void RenderWorker::loop() {
             busy_ = false;
             running_group_ = nullptr;
             cancelled = running_cancelled_;
-            if (!cancelled) {
+            if (cancelled) {
+                ++cancelled_;
+            } else {
+                ++completed_;
                 frame.job = std::move(job);
                 finished_ = std::move(frame);
             }

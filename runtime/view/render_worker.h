@@ -48,6 +48,11 @@ public:
     // Blocks until a frame finishes (for scripted runs).
     FinishedFrame wait();
     bool idle() const;
+    // Counts since construction: frames taken up, completed (delivered or replaced by a newer
+    // one before anyone took them) and abandoned as stale.
+    std::uint64_t frames_started() const;
+    std::uint64_t frames_completed() const;
+    std::uint64_t frames_cancelled() const;
 
 private:
     void loop();
@@ -64,6 +69,7 @@ private:
     bool running_cancelled_ = false;
     bool running_preview_ = false;
     bool stop_ = false;
+    std::uint64_t started_ = 0, completed_ = 0, cancelled_ = 0;
     std::thread thread_;
 };
 

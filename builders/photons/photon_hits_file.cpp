@@ -2,27 +2,14 @@
 
 #include <algorithm>
 
+#include "formats/photon_hits_summary.h"
 #include "formats/container_reader.h"
 #include "formats/section_ids.h"
 #include "formats/tree_validation.h"
 
 namespace kdpm {
 
-void update_hits_info(PhotonHitSet& set) {
-    auto& info = set.info;
-    info.stored_count = static_cast<std::uint32_t>(set.hits.size());
-    info.caustic_count = 0;
-    for (int a = 0; a < 3; ++a) info.bounds_min[a] = info.bounds_max[a] = 0.0f;
-    bool first = true;
-    for (const auto& h : set.hits) {
-        if (h.flags & kPhotonCaustic) ++info.caustic_count;
-        for (int a = 0; a < 3; ++a) {
-            info.bounds_min[a] = first ? h.position[a] : std::min(info.bounds_min[a], h.position[a]);
-            info.bounds_max[a] = first ? h.position[a] : std::max(info.bounds_max[a], h.position[a]);
-        }
-        first = false;
-    }
-}
+void update_hits_info(PhotonHitSet& set) { summarize_photon_hits(set.hits, set.info); }
 
 ContainerWriter photon_hits_writer(const PhotonHitSet& set, const Metadata& metadata) {
     ContainerWriter w(FileKind::photon_hits);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "formats/photon_hits_summary.h"
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/photons/photon_path.h"
 
@@ -94,16 +95,7 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
         if (!(l.power > 0.0f)) continue;
         for (int c = 0; c < 3; ++c) info.emitted_power[c] += kPhotonPi * l.area * l.radiance[c];
     }
-    info.stored_count = static_cast<std::uint32_t>(shot.hits.size());
-    bool first = true;
-    for (const auto& h : shot.hits) {
-        if (h.flags & kPhotonCaustic) ++info.caustic_count;
-        for (int a = 0; a < 3; ++a) {
-            info.bounds_min[a] = first ? h.position[a] : std::min(info.bounds_min[a], h.position[a]);
-            info.bounds_max[a] = first ? h.position[a] : std::max(info.bounds_max[a], h.position[a]);
-        }
-        first = false;
-    }
+    summarize_photon_hits(shot.hits, info);
     return shot;
 }
 

@@ -5,6 +5,7 @@
 
 #include "formats/atomic_file.h"
 #include "formats/container_reader.h"
+#include "tests/support/file_contents.h"
 #include "tests/formats/sample_container.h"
 #include "tests/support/temp_dir.h"
 
@@ -15,11 +16,6 @@ namespace {
 
 std::size_t entries(const fs::path& dir) {
     return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
-}
-
-std::string contents(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace
@@ -34,7 +30,7 @@ TEST_CASE("a write that fails midway leaves the old file and no temporary", "[fo
                                               throw std::runtime_error("interrupted");
                                           }),
                     std::runtime_error);
-    CHECK(contents(dest) == "old contents");
+    CHECK(test::file_contents(dest) == "old contents");
     CHECK(entries(dir.path()) == 1);
 }
 

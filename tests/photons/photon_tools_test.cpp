@@ -4,20 +4,12 @@
 #include <iterator>
 
 #include "runtime/photons/photon_map_file.h"
+#include "tests/support/file_contents.h"
 #include "tests/photons/synthetic_photons.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
-
-namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-}  // namespace
 
 TEST_CASE("kdpm-build-photons writes a valid tree whatever the thread count", "[photons][tools]") {
     test::TempDir dir;
@@ -33,7 +25,7 @@ TEST_CASE("kdpm-build-photons writes a valid tree whatever the thread count", "[
         REQUIRE(r2.exit_code == 0);
         CHECK_THAT(r1.output, Catch::Contains("40000 photons") || Catch::Contains("photons ("));
         CHECK(r2.output.empty());
-        CHECK(slurp(one) == slurp(two));
+        CHECK(test::file_contents(one) == test::file_contents(two));
         CHECK(test::run_tool("kdpm-validate " + one.string()).exit_code == 0);
         auto file = PhotonMapFile::open(one);
         CHECK(file.has_map(PhotonMapKind::caustic));
@@ -50,7 +42,7 @@ TEST_CASE("kdpm-build-photons refuses bad input in one line", "[photons][tools]"
 
     auto hits = dir / "p.kdph";
     test::write_photon_hits_file(test::synthetic_photons(1000, 5), hits);
-    auto bytes = slurp(hits);
+    auto bytes = test::file_contents(hits);
     bytes[bytes.size() / 2] ^= 0x40;
     auto bad = dir / "bad.kdph";
     std::ofstream(bad, std::ios::binary) << bytes;
@@ -81,7 +73,7 @@ TEST_CASE("The Cornell box goes through kdpm-shoot-photons and kdpm-build-photon
     REQUIRE(r1.exit_code == 0);
     REQUIRE(r2.exit_code == 0);
     CHECK_THAT(r1.output, Catch::Contains("20000 emitted") && Catch::Contains("rays"));
-    CHECK(slurp(one) == slurp(two));
+    CHECK(test::file_contents(one) == test::file_contents(two));
     CHECK(test::run_tool("kdpm-validate " + one.string()).exit_code == 0);
     auto kdp = (dir / "cornell.kdp").string();
     REQUIRE(test::run_tool("kdpm-build-photons " + one.string() + " -o " + kdp + " --quiet").exit_code == 0);

@@ -7,17 +7,13 @@
 #include <fstream>
 #include <iterator>
 
+#include "tests/support/file_contents.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
 
 namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 void spill(const std::filesystem::path& p, const std::string& bytes) {
     std::ofstream out(p, std::ios::binary);
@@ -60,7 +56,7 @@ TEST_CASE("kdpm-render renders direct light to a PNG and prints the stage table"
 TEST_CASE("a truncated or corrupted tree file gives a one-line error", "[render][tools]") {
     test::TempDir dir;
     auto kdg = build_cornell(dir);
-    const std::string bytes = slurp(kdg);
+    const std::string bytes = test::file_contents(kdg);
     auto truncated = dir / "truncated.kdg", corrupted = dir / "corrupted.kdg", garbage = dir / "garbage.kdg";
     spill(truncated, bytes.substr(0, bytes.size() / 2));
     std::string flipped = bytes;

@@ -44,11 +44,12 @@ void image_size(const ViewerConfig& cfg, const CameraRecord& cam, std::uint32_t&
 
 class Viewer {
 public:
-    Viewer(const ViewerConfig& cfg, const LoadedScene& scene, Renderer& renderer, GlWindow& window)
+    Viewer(const ViewerConfig& cfg, const LoadedScene& scene, const CameraRecord& start_camera, Renderer& renderer,
+           GlWindow& window)
         : cfg_(cfg), renderer_(renderer), window_(window),
-          camera_(scene.views().camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
+          camera_(start_camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
           schedule_(1, 1, cfg.max_spp, cfg.preview_divisor) {
-        image_size(cfg, scene.views().camera, width_, height_);
+        image_size(cfg, start_camera, width_, height_);
         schedule_ = RefinementSchedule(width_, height_, cfg.max_spp, cfg.preview_divisor);
         have_photons_ = !scene.views().photons.empty();
         photons_ = scene.views().photons;
@@ -326,13 +327,14 @@ int run_viewer(const ViewerConfig& cfg) {
                                  " needs a photon map (.kdp); give one or use --mode direct");
     if (cfg.view == ViewKind::photon_density && scene.views().photons.empty())
         throw std::runtime_error("the density view needs a photon map (.kdp)");
+    const CameraRecord start_camera = cfg.camera.applied_to(scene.views().camera);
     std::uint32_t w = 0, h = 0;
-    image_size(cfg, scene.views().camera, w, h);
+    image_size(cfg, start_camera, w, h);
     GlWindow window(static_cast<int>(w), static_cast<int>(h), "kdpm-view");
     BackendSelection selected = select_backend(cfg.backend);
     if (!selected.notice.empty() && !cfg.quiet) std::fprintf(stderr, "kdpm-view: %s\n", selected.notice.c_str());
     Renderer renderer(scene.views(), selected.kind);
-    Viewer viewer(cfg, scene, renderer, window);
+    Viewer viewer(cfg, scene, start_camera, renderer, window);
     const bool scripted = cfg.frames > 0 || cfg.fly_frames > 0 || !cfg.screenshot.empty();
     if (scripted) return viewer.run_scripted();
     if (!cfg.quiet) std::printf("kdpm-view keys:\n%s\n", key_help_text().c_str());

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "runtime/backend/backend_kind.h"
+#include "runtime/render/camera_override.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/view/view_options.h"
 
@@ -14,6 +15,7 @@ struct ViewerConfig {
     std::string geometry_path;
     std::string photon_path;  // empty: no photon map
     std::uint32_t width = 0, height = 0;  // 0: the file camera's
+    CameraOverride camera;                // the start (and reset) view: the file's camera with these parts replaced
     std::uint32_t k = 0;                  // 0: the scene's default
     std::optional<RenderMode> mode;       // default: photons with a photon map, else direct
     BackendRequest backend = BackendRequest::automatic;

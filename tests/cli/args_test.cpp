@@ -1,5 +1,7 @@
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,4 +49,17 @@ TEST_CASE("a short name is only an alias of its long option", "[cli]") {
     CHECK(output == "a.kdg");
     parse(args, {"tool", "-o", "b.kdg"});
     CHECK(output == "b.kdg");
+}
+
+TEST_CASE("a three-number option takes the next three words, negative numbers included", "[cli]") {
+    std::optional<std::array<double, 3>> eye, up;
+    std::string input;
+    cli::Args args("tool", "test");
+    args.positional("INPUT", &input, "in").option("eye", &eye, "eye").option("up", &up, "up");
+    parse(args, {"tool", "--eye", "-1", "2.5", "-3e2", "scene.kdg"});
+    REQUIRE(eye);
+    CHECK(*eye == std::array<double, 3>{-1.0, 2.5, -300.0});
+    CHECK_FALSE(up);
+    CHECK(input == "scene.kdg");
+    CHECK_THAT(args.usage(), Catch::Contains("--eye X Y Z") && Catch::Contains("--version"));
 }

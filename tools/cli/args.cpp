@@ -1,5 +1,7 @@
 #include "tools/cli/args.h"
 
+#include "tools/cli/version_text.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -58,6 +60,26 @@ Args& Args::option(const std::string& name, const std::string& meta, const std::
     return *this;
 }
 
+Args& Args::option(const std::string& name, std::optional<std::array<double, 3>>* target, const std::string& help) {
+    Option o{name, "X Y Z", help, false, [=](const std::string& v) {
+                 std::array<double, 3> xyz{};
+                 std::size_t start = 0;
+                 for (int i = 0; i < 3; ++i) {
+                     const std::size_t end = v.find('\n', start);
+                     const std::string word = v.substr(start, end == std::string::npos ? std::string::npos : end - start);
+                     char* stop = nullptr;
+                     xyz[i] = std::strtod(word.c_str(), &stop);
+                     if (word.empty() || *stop != '\0' || !std::isfinite(xyz[i]))
+                         throw std::invalid_argument("'" + word + "' is not a finite number");
+                     start = end + 1;
+                 }
+                 *target = xyz;
+             }};
+    o.values = 3;
+    options_.push_back(std::move(o));
+    return *this;
+}
+
 Args& Args::positional(const std::string& meta, std::string* target, const std::string& help, bool required) {
     positionals_.push_back({meta, help, target, required});
     return *this;
@@ -82,6 +104,7 @@ std::string Args::usage() const {
         u += "  " + left + std::string(std::max<int>(2, 24 - (int)left.size()), ' ') + o.help + "\n";
     }
     u += "  --help                  show this help\n";
+    u += "  --version               show the kdpm version, file format versions and backends\n";
     return u;
 }
 
@@ -106,6 +129,10 @@ void Args::parse(int argc, char** argv) {
             std::cout << usage();
             std::exit(0);
         }
+        if (!only_positionals && a == "--version") {
+            std::cout << version_text(program_);
+            std::exit(0);
+        }
         if (!only_positionals && a.size() > 2 && a.rfind("--", 0) == 0) {
             std::string name = a.substr(2), value;
             bool has_value = false;
@@ -120,6 +147,13 @@ void Args::parse(int argc, char** argv) {
             if (!opt) fail("unknown option --" + name);
             if (opt->is_flag) {
                 if (has_value) fail("--" + name + " takes no value");
+            } else if (opt->values > 1) {
+                if (has_value || i + opt->values >= argc)
+                    fail("--" + name + " needs " + std::to_string(opt->values) + " values (" + opt->meta + ")");
+                for (int v = 0; v < opt->values; ++v) {
+                    if (v) value += '\n';
+                    value += argv[++i];
+                }
             } else if (!has_value) {
                 if (i + 1 >= argc) fail("--" + name + " needs a value");
                 value = argv[++i];

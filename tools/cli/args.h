@@ -2,8 +2,10 @@
 // A small command-line parser shared by the kdpm tools: --name VALUE / --name=VALUE options,
 // flags, positionals, numeric range checks, and --help. Errors end the program with a one-line
 // message and exit code 2.
+#include <array>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,10 +28,13 @@ public:
     Args& option(const std::string& name, const std::string& meta, const std::string& help,
                  std::function<void(const std::string&)> parse);
 
+    // An option followed by three finite numbers ("--eye X Y Z").
+    Args& option(const std::string& name, std::optional<std::array<double, 3>>* target, const std::string& help);
+
     // A customary one-letter spelling of a long option ("-o FILE" for "--output FILE").
     Args& short_name(char letter, const std::string& long_name);
 
-    void parse(int argc, char** argv);  // exits on --help (0) or error (2)
+    void parse(int argc, char** argv);  // exits on --help or --version (0) or error (2)
     const std::string& program() const { return program_; }
     std::string usage() const;
 
@@ -38,6 +43,8 @@ private:
         std::string name, meta, help;
         bool is_flag = false;
         std::function<void(const std::string&)> apply;
+        int values = 1;  // command-line words after the name; joined by '\n' for apply
+
     };
     struct Positional {
         std::string meta, help;

@@ -13,6 +13,7 @@
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/cli/args.h"
+#include "tools/cli/camera_override.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
 
@@ -42,6 +43,7 @@ int run(int argc, char** argv) {
     double exposure = 0.0, max_radius = -1.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
+    CameraOverride camera;
 
     cli::Args args("kdpm-render", "Render a frame of a kdpm scene (geometry kd-tree + photon kd-tree) to an image.");
     args.positional("scene.kdg", &geometry_path, "geometry kd-tree from kdpm-build-geometry")
@@ -69,6 +71,7 @@ int run(int argc, char** argv) {
         .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
         .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
+    cli::add_camera_options(args, camera);
     args.short_name('o', "output");
     args.parse(argc, argv);
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
@@ -86,6 +89,7 @@ int run(int argc, char** argv) {
     std::optional<std::filesystem::path> photons;
     if (!photon_path.empty()) photons = photon_path;
     LoadedScene scene = LoadedScene::load(geometry_path, photons);
+    settings.camera = camera.applied_to(scene.views().camera);
     Renderer renderer(scene.views(), selected.kind);
 
     settings.width = static_cast<std::uint32_t>(width);

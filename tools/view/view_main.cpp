@@ -5,6 +5,7 @@
 #include "runtime/backend/thread_limit.h"
 #include "runtime/view/viewer_config.h"
 #include "tools/cli/args.h"
+#include "tools/cli/camera_override.h"
 #include "tools/cli/run_tool.h"
 
 using namespace kdpm;
@@ -41,6 +42,7 @@ int run(int argc, char** argv) {
         .flag("overlay", &cfg.overlay, "scripted screenshots include the stats text")
         .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
         .flag("quiet", &cfg.quiet, "print nothing but errors");
+    cli::add_camera_options(args, cfg.camera);
     args.parse(argc, argv);
     cfg.exposure_stops = static_cast<float>(exposure);
     cfg.width = static_cast<std::uint32_t>(width);

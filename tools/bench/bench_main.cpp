@@ -18,12 +18,33 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path repository_root(const char* argv0) {
-    // The tool lives in build/bin; scene cards are in the repository's scenes/.
+bool has_scenes(const fs::path& root) {
     std::error_code ec;
+    return fs::is_regular_file(root / "scenes" / "cornell-box" / "cornell-box.json", ec);
+}
+
+// The folder holding scenes/: --repo, else the working directory or one above it, else the source
+// tree around build/bin, else an installed share/kdpm.
+fs::path find_scenes_root(const std::string& given, const char* argv0) {
+    if (!given.empty()) {
+        if (!has_scenes(given))
+            throw std::runtime_error("--repo " + given + " has no scenes/cornell-box/cornell-box.json");
+        return given;
+    }
+    std::vector<fs::path> tried;
+    std::error_code ec;
+    for (fs::path dir = fs::current_path(ec); !ec && !dir.empty(); dir = dir.parent_path()) {
+        tried.push_back(dir);
+        if (dir == dir.parent_path()) break;
+    }
     fs::path exe = fs::canonical("/proc/self/exe", ec);
     if (ec) exe = fs::absolute(argv0);
-    return exe.parent_path().parent_path().parent_path();
+    tried.push_back(exe.parent_path().parent_path().parent_path());  // <repo>/build/bin/kdpm-bench
+    tried.push_back(exe.parent_path().parent_path() / "share" / "kdpm");  // <prefix>/bin/kdpm-bench
+    for (const auto& dir : tried)
+        if (has_scenes(dir)) return dir;
+    throw std::runtime_error("cannot find the scenes/ folder from " + fs::current_path(ec).string() +
+                             " or from the executable; run it from the kdpm source tree or pass --repo DIR");
 }
 
 }  // namespace
@@ -38,14 +59,14 @@ int main(int argc, char** argv) {
         .option("frames", &frames, "N", "frames (and builds) per median (default 3)", 1, 100)
         .option("photons", &photons, "N", "photons emitted (default 262144, as the report)", 1, 1 << 26)
         .option("size", &size, "N", "image width and height (default 512)", 8, 4096)
-        .option("repo", &scenes_root, "DIR", "repository root holding scenes/ (default: found from the executable)")
+        .option("repo", &scenes_root, "DIR", "folder holding scenes/ (default: the working directory or a parent, else found from the executable)")
         .option("work", &work, "DIR", "where the .kdg/.kdp files go (default: a temporary folder)")
         .flag("no-peers", &no_peers, "skip Embree and nanoflann")
         .flag("quick", &quick, "k = 2, 32, 256 only")
         .flag("quiet", &quiet, "no progress lines on stderr");
     args.parse(argc, argv);
     return cli::run_tool("kdpm-bench", [&] {
-        fs::path root = scenes_root.empty() ? repository_root(argv[0]) : fs::path(scenes_root);
+        const fs::path root = find_scenes_root(scenes_root, argv[0]);
         fs::path dir = work.empty() ? fs::temp_directory_path() / ("kdpm-bench-" + std::to_string(::getpid())) : fs::path(work);
         fs::create_directories(dir);
         const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -1,0 +1,55 @@
+// kdpm-bench finds scenes/ from the working directory (or a parent) when its executable lives
+// elsewhere, and says which option to pass when it finds none.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "tests/support/run_command.h"
+#include "tests/support/temp_dir.h"
+
+using namespace kdpm;
+namespace fs = std::filesystem;
+
+namespace {
+
+test::CommandResult run_in(const fs::path& cwd, const std::string& command) {
+    const std::string line = "cd '" + cwd.string() + "' && " + command + " 2>&1 </dev/null";
+    FILE* pipe = ::popen(line.c_str(), "r");
+    REQUIRE(pipe);
+    test::CommandResult r{0, {}};
+    char buf[4096];
+    while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) r.output.append(buf, n);
+    const int status = ::pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("kdpm-bench finds scenes/ from the working directory", "[tools][bench]") {
+    test::TempDir dir;
+    // A copy of the executable outside the source tree, so only the working directory can lead to scenes/.
+    fs::create_directories(dir / "elsewhere" / "bin");
+    const fs::path bench = dir / "elsewhere" / "bin" / "kdpm-bench";
+    fs::copy_file(test::tool_path("kdpm-bench"), bench);
+    const std::string quick = bench.string() + " --scenes cornell-box --frames 1 --photons 2000 --size 16 --no-peers --quick --quiet";
+
+    const auto lost = run_in(dir.path(), quick);
+    INFO(lost.output);
+    CHECK(lost.exit_code == 1);
+    CHECK_THAT(lost.output, Catch::Contains("cannot find the scenes/ folder") && Catch::Contains("--repo"));
+
+    fs::create_directories(dir / "project" / "scenes" / "cornell-box" / "deeper");
+    fs::copy(test::source_path("scenes/cornell-box"), dir / "project" / "scenes" / "cornell-box");
+    const auto found = run_in(dir / "project" / "scenes" / "cornell-box" / "deeper", quick);
+    INFO(found.output);
+    CHECK(found.exit_code == 0);
+    CHECK_THAT(found.output, Catch::Contains("cornell-box"));
+
+    const auto given = run_in(dir.path(), quick + " --repo " + (dir / "project").string());
+    INFO(given.output);
+    CHECK(given.exit_code == 0);
+}

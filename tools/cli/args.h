@@ -1,13 +1,19 @@
 #pragma once
-// A small command-line parser shared by the kdpm tools: --name VALUE / --name=VALUE options,
-// flags, positionals, numeric range checks, and --help. Errors end the program with a one-line
-// message and exit code 2.
+// The command line of every kdpm tool, parsed by CLI11: --name VALUE / --name=VALUE options with
+// range checks, flags, positionals, one-letter aliases, option groups in --help, --version, and
+// --config FILE (TOML or INI: `name = value` per line, the same names as the options). An option
+// given twice takes its last value, so scripts can append overrides. Errors end the program with
+// a one-line message and exit code 2.
 #include <array>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace kdpm::cli {
 
@@ -23,16 +29,17 @@ public:
                  double min = -std::numeric_limits<double>::infinity(),
                  double max = std::numeric_limits<double>::infinity());
     Args& positional(const std::string& meta, std::string* target, const std::string& help, bool required = true);
-    // Options whose value needs more than a range check (e.g. an enum); `check` throws
+    // Options whose value needs more than a range check (e.g. an enum); `parse` throws
     // std::invalid_argument with the reason.
     Args& option(const std::string& name, const std::string& meta, const std::string& help,
                  std::function<void(const std::string&)> parse);
-
     // An option followed by three finite numbers ("--eye X Y Z").
     Args& option(const std::string& name, std::optional<std::array<double, 3>>* target, const std::string& help);
 
     // A customary one-letter spelling of a long option ("-o FILE" for "--output FILE").
     Args& short_name(char letter, const std::string& long_name);
+    // Options declared after this call are listed under `title` in --help.
+    Args& group(const std::string& title);
 
     void parse(int argc, char** argv);  // exits on --help or --version (0) or error (2)
     const std::string& program() const { return program_; }
@@ -40,11 +47,10 @@ public:
 
 private:
     struct Option {
-        std::string name, meta, help;
+        std::string name, meta, help, group;
         bool is_flag = false;
-        std::function<void(const std::string&)> apply;
-        int values = 1;  // command-line words after the name; joined by '\n' for apply
-
+        int values = 1;  // command-line words after the name
+        std::function<void(const std::vector<std::string>&)> apply;
     };
     struct Positional {
         std::string meta, help;
@@ -52,11 +58,12 @@ private:
         bool required;
     };
     [[noreturn]] void fail(const std::string& why) const;
+    void describe(CLI::App& app) const;
 
-    std::string program_, summary_;
+    std::string program_, summary_, group_ = "Options";
     std::vector<Option> options_;
     std::vector<Positional> positionals_;
-    std::vector<std::pair<std::string, std::string>> short_names_;  // "-o" -> "output"
+    std::vector<std::pair<char, std::string>> short_names_;  // 'o' -> "output"
 };
 
 }  // namespace kdpm::cli

@@ -7,6 +7,7 @@
 namespace kdpm::cli {
 
 void add_camera_options(Args& args, CameraOverride& camera) {
+    args.group("Camera (default: the file's)");
     args.option("eye", &camera.eye, "camera position (default: the file's camera)")
         .option("lookat", &camera.lookat, "point the camera looks at (default: the file's)")
         .option("up", &camera.up, "camera up direction (default: the file's)")

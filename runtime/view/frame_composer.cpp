@@ -6,7 +6,6 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/view/bitmap_font.h"
 
 namespace kdpm {
 
@@ -46,22 +45,36 @@ Image normal_view(const RenderResult& frame) {
 Image density_view(const RenderResult& frame, const std::vector<float>& density) {
     Image out(frame.linear.width, frame.linear.height);
     if (density.size() != out.pixel_count()) return out;
-    std::vector<float> logs;
-    for (float d : density)
-        if (d > 0.0f && std::isfinite(d)) logs.push_back(std::log(d));
-    if (logs.empty()) return out;
-    std::sort(logs.begin(), logs.end());
-    const float lo = logs[logs.size() / 100], hi = logs[logs.size() - 1 - logs.size() / 100];
-    const float span = hi > lo ? hi - lo : 1.0f;
+    const DensityScale scale = density_scale(density);
+    if (!scale.valid) return out;
     for (std::size_t i = 0; i < density.size(); ++i) {
         if (!(density[i] > 0.0f) || !std::isfinite(density[i])) continue;
-        const glm::vec3 c = heat_color(0.1f + 0.9f * (std::log(density[i]) - lo) / span);
+        const glm::vec3 c = heat_color(density_scale_position(scale, std::log(density[i])));
         for (int k = 0; k < 3; ++k) out.rgb[i * 3 + k] = c[k];
     }
     return out;
 }
 
 }  // namespace
+
+DensityScale density_scale(const std::vector<float>& density) {
+    std::vector<float> logs;
+    for (float d : density)
+        if (d > 0.0f && std::isfinite(d)) logs.push_back(std::log(d));
+    DensityScale scale;
+    if (logs.empty()) return scale;
+    std::sort(logs.begin(), logs.end());
+    scale.log_lo = logs[logs.size() / 100];
+    scale.log_hi = logs[logs.size() - 1 - logs.size() / 100];
+    scale.valid = true;
+    return scale;
+}
+
+float density_scale_position(const DensityScale& scale, float log_density) {
+    const float span = scale.log_hi > scale.log_lo ? scale.log_hi - scale.log_lo : 1.0f;
+    // 0.1 up: the lowest density shown is still visibly not black (a miss is).
+    return 0.1f + 0.9f * (log_density - scale.log_lo) / span;
+}
 
 glm::vec3 heat_color(float t) {
     if (!std::isfinite(t)) t = 0.0f;
@@ -101,25 +114,6 @@ Image resize_nearest(const Image& source, int width, int height) {
         }
     }
     return out;
-}
-
-void draw_overlay(Image& image, const std::string& stats, const ViewOptions& options) {
-    // Text doubles in size on large images so it stays legible.
-    const int scale = image.height >= 1000 ? 2 : 1;
-    const glm::vec3 ink(1.0f, 1.0f, 0.85f);
-    if (options.stats && !stats.empty()) {
-        darken_rect(image, 0, 0, BitmapFont::text_width(stats, scale) + 8 * scale,
-                    BitmapFont::text_height(stats, scale) + 8 * scale, 0.45f);
-        draw_text(image, 4 * scale, 4 * scale, stats, ink, scale);
-    }
-    if (options.help) {
-        const std::string help = key_help_text();
-        const int w = BitmapFont::text_width(help, scale) + 12 * scale;
-        const int h = BitmapFont::text_height(help, scale) + 12 * scale;
-        const int x = std::max(0, (image.width - w) / 2), y = std::max(0, (image.height - h) / 2);
-        darken_rect(image, x, y, w, h, 0.25f);
-        draw_text(image, x + 6 * scale, y + 6 * scale, help, ink, scale);
-    }
 }
 
 void to_rgb8(const Image& image, std::vector<unsigned char>& out) {

@@ -1,7 +1,7 @@
 #pragma once
 // Turns a rendered frame into the displayed image: the chosen view (shaded through the same
 // post-processing as kdpm-render, depth, normals, or a photon-density heat map), scaled up to
-// the window's image size when it was a reduced-resolution preview, plus the optional text.
+// the window's image size when it was a reduced-resolution preview.
 #include <string>
 #include <vector>
 
@@ -20,8 +20,15 @@ Image compose_view(const RenderResult& frame, const std::vector<float>& density,
 // Nearest-neighbour resize (previews are shown blocky rather than blurred: it reads as "not final").
 Image resize_nearest(const Image& source, int width, int height);
 
-// Stats in the top-left corner and, when options.help, the key list in a dark panel.
-void draw_overlay(Image& image, const std::string& stats, const ViewOptions& options);
+// The density view's colour scale: natural logs of the densities shown at its dark and bright
+// ends (the frame's 1st and 99th percentiles). valid is false when nothing has a density.
+struct DensityScale {
+    float log_lo = 0.0f, log_hi = 0.0f;
+    bool valid = false;
+};
+DensityScale density_scale(const std::vector<float>& density);
+// Where a log density falls on the scale, in [0, 1] (the input of heat_color).
+float density_scale_position(const DensityScale& scale, float log_density);
 
 // Packs [0, 1] floats into 8-bit RGB, rounding like OpenImageIO's conversion.
 void to_rgb8(const Image& image, std::vector<unsigned char>& out);

@@ -74,7 +74,7 @@ std::string key_help_text() {
            "V        view: shaded / depth / normal / photon density\n"
            "+ -      exposure   T  tone mapper\n"
            "F12      screenshot (PNG in the working folder)\n"
-           "H        help       O  stats   Esc  quit";
+           "H        help       O  panel   Esc  quit";
 }
 
 }  // namespace kdpm

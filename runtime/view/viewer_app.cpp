@@ -1,9 +1,10 @@
 // kdpm-view's main loop: input -> fly camera and view options -> frame jobs for the background
-// render worker -> the newest useful frame composed, overlaid and presented.
+// render worker -> the newest useful frame composed and presented under the control panel.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,8 @@
 #include "runtime/render/image_output.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
+#include "runtime/view/camera_command_line.h"
+#include "runtime/view/control_panel.h"
 #include "runtime/view/fly_camera.h"
 #include "runtime/view/frame_composer.h"
 #include "runtime/view/gl_window.h"
@@ -48,9 +51,9 @@ public:
            GlWindow& window)
         : cfg_(cfg), renderer_(renderer), window_(window),
           camera_(start_camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
-          schedule_(1, 1, cfg.max_spp, cfg.preview_divisor) {
+          schedule_(1, 1, cfg.max_spp, cfg.preview_divisor), max_spp_(cfg.max_spp), light_samples_(cfg.light_samples) {
         image_size(cfg, start_camera, width_, height_);
-        schedule_ = RefinementSchedule(width_, height_, cfg.max_spp, cfg.preview_divisor);
+        schedule_ = RefinementSchedule(width_, height_, max_spp_, cfg.preview_divisor);
         have_photons_ = !scene.views().photons.empty();
         photons_ = scene.views().photons;
         const std::uint32_t scene_k = scene.views().geometry.info.default_k;
@@ -59,7 +62,7 @@ public:
         options_.view = cfg.view;
         options_.exposure_stops = cfg.exposure_stops;
         options_.tone_map = cfg.tone_map;
-        displayed_ = Image(static_cast<int>(width_), static_cast<int>(height_));
+        plain_ = Image(static_cast<int>(width_), static_cast<int>(height_));
     }
 
     int run_interactive() {
@@ -72,11 +75,14 @@ public:
             last = now;
             bool view_changed = false, camera_changed = false;
             handle_keys(view_changed, camera_changed);
+            apply_panel_actions(view_changed, camera_changed);
             camera_changed |= fly(dt);
             if (camera_changed || view_changed) restart(true);
             bool fresh = collect_frame();
-            if (fresh || recompose_) present();
-            // Sleep while nothing is moving; stay responsive to keys and the worker.
+            if (fresh || recompose_) compose();
+            // The interface is redrawn every pass, so its widgets answer at once.
+            window_.draw(ui(true));
+            // Sleep while nothing is moving; stay responsive to keys, the panel and the worker.
             if (!camera_changed && !fresh) window_.wait(1.0 / 60.0);
         }
         return 0;
@@ -119,7 +125,7 @@ private:
         s.spp = step.spp;
         s.k = options_.k;
         s.mode = options_.mode;
-        s.light_samples = cfg_.light_samples;
+        s.light_samples = light_samples_;
         if (options_.view == ViewKind::photon_density) {
             // The density comes from a k-nearest search at each pixel's first hit; the frame
             // itself only has to supply the hit points, so it is rendered as cheaply as possible.
@@ -165,6 +171,9 @@ private:
 
     void accept(FinishedFrame frame) {
         shown_generation_ = frame.job.generation;
+        const StageTimes& t = frame.result.times;
+        history_.push({static_cast<float>(t.ray_tracing_ms), static_cast<float>(t.photon_gather_ms + frame.density_ms),
+                       static_cast<float>(t.shading_ms), static_cast<float>(t.post_ms + t.transfer_ms)});
         last_ = std::move(frame);
         recompose_ = true;
         ++frames_shown_;
@@ -179,7 +188,8 @@ private:
         accept(std::move(done));
         if (refine) schedule_.advance();
         window_.poll();
-        present();
+        compose();
+        window_.draw(ui(cfg_.panel));
         if (!cfg_.quiet) std::printf("%s\n", title_text().c_str());
     }
 
@@ -210,7 +220,7 @@ private:
                 case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: options_.darker(); break;
                 case GLFW_KEY_T: options_.next_tone_map(); break;
                 case GLFW_KEY_H: options_.help = !options_.help; break;
-                case GLFW_KEY_O: options_.stats = !options_.stats; break;
+                case GLFW_KEY_O: options_.stats = !options_.stats; break;  // the panel
                 case GLFW_KEY_F12: save_unique(); break;
                 default: break;
             }
@@ -240,48 +250,91 @@ private:
         return t.str();
     }
 
-    std::string stats_text() const {
-        std::ostringstream t;
+    // The frame's line in the panel: backend, resolution, samples.
+    std::string frame_line() const {
+        if (!last_) return "rendering the first frame...";
         char line[160];
-        if (last_) {
-            const auto& r = last_->result;
-            std::snprintf(line, sizeof line, "%s %dx%d%s %u spp", backend_name(renderer_.backend()), r.linear.width,
-                          r.linear.height, last_->job.preview ? " (moving)" : "", last_->job.settings.spp);
-            t << line << "\n";
-            const StageTimes& s = r.times;
-            // The density view's k-nearest search counts as gathering.
-            std::snprintf(line, sizeof line, "trace %.1f gather %.1f shade %.1f post %.1f ms", s.ray_tracing_ms,
-                          s.photon_gather_ms + last_->density_ms, s.shading_ms, s.post_ms + s.transfer_ms);
-            t << line << "\n";
-        }
-        if (have_photons_)
-            std::snprintf(line, sizeof line, "k %u  mode %s  %u global + %u caustic photons", options_.k,
-                          render_mode_name(options_.mode), photons_.global.photon_count,
-                          photons_.caustic.photon_count);
-        else
-            std::snprintf(line, sizeof line, "k %u  mode %s  no photon map", options_.k, render_mode_name(options_.mode));
-        t << line << "\n";
-        std::snprintf(line, sizeof line, "%s  exposure %+.1f  %s  H help", view_name(options_.view),
-                      options_.exposure_stops, tone_map_name(options_.tone_map));
-        t << line;
-        return t.str();
+        const auto& r = last_->result;
+        std::snprintf(line, sizeof line, "%dx%d%s, %u spp", r.linear.width, r.linear.height,
+                      last_->job.preview ? " (moving)" : "", last_->job.settings.spp);
+        return line;
     }
 
-    // Recomposes (view, scale to full size, text) and uploads.
-    void present() {
-        if (last_) {
-            plain_ = resize_nearest(compose_view(last_->result, last_->density, options_), int(width_), int(height_));
-            displayed_ = plain_;
-            draw_overlay(displayed_, stats_text(), options_);
+    std::string photons_line() const {
+        if (!have_photons_) return "no photon map";
+        char line[160];
+        std::snprintf(line, sizeof line, "%u global + %u caustic photons", photons_.global.photon_count,
+                      photons_.caustic.photon_count);
+        return line;
+    }
+
+    // The interface of this pass: the panel (O toggles it) and the key list (H).
+    std::function<void()> ui(bool with_panel) {
+        if (!with_panel) return {};
+        return [this] {
+            if (options_.stats) {
+                PanelModel model;
+                model.options = &options_;
+                model.max_spp = &max_spp_;
+                model.light_samples = &light_samples_;
+                model.have_photons = have_photons_;
+                model.backend = backend_name(renderer_.backend());
+                model.frame_line = frame_line();
+                model.photons_line = photons_line();
+                model.history = &history_;
+                model.camera = camera_.record();
+                if (options_.view == ViewKind::photon_density && last_) model.density = density_scale(last_->density);
+                const PanelActions act = draw_control_panel(model);
+                pending_.rerender |= act.rerender;
+                pending_.recompose |= act.recompose;
+                pending_.reset_camera |= act.reset_camera;
+                pending_.copy_camera |= act.copy_camera;
+            }
+            if (options_.help) draw_key_help();
+        };
+    }
+
+    void apply_panel_actions(bool& view_changed, bool& camera_changed) {
+        const PanelActions act = pending_;
+        pending_ = PanelActions{};
+        if (act.rerender) {
+            schedule_ = RefinementSchedule(width_, height_, max_spp_, cfg_.preview_divisor);
+            view_changed = true;
         }
-        to_rgb8(displayed_, bytes_);
-        window_.present(bytes_, displayed_.width, displayed_.height);
+        if (act.reset_camera) {
+            camera_.reset();
+            camera_changed = true;
+        }
+        if (act.copy_camera) {
+            const std::string line = "kdpm-render " + cfg_.geometry_path +
+                                     (cfg_.photon_path.empty() ? "" : " " + cfg_.photon_path) + " " +
+                                     camera_command_line(camera_.record());
+            std::printf("%s\n", line.c_str());
+            std::fflush(stdout);
+            window_.set_clipboard(line);
+        }
+        recompose_ |= act.recompose || act.rerender;
+    }
+
+    // Recomposes the view at full size and uploads it.
+    void compose() {
+        if (last_) plain_ = resize_nearest(compose_view(last_->result, last_->density, options_), int(width_), int(height_));
+        to_rgb8(plain_, bytes_);
+        window_.show(bytes_, plain_.width, plain_.height);
         window_.set_title(title_text());
         recompose_ = false;
     }
 
     void save(const std::filesystem::path& path) {
-        const Image& img = cfg_.overlay ? displayed_ : plain_;
+        Image shown;
+        if (cfg_.panel) {
+            // The window as it looks, panel included: drawn once more and read back.
+            std::vector<unsigned char> rgb;
+            window_.draw(ui(true), &rgb);
+            shown = Image(window_.capture_width(), window_.capture_height());
+            for (std::size_t i = 0; i < rgb.size() && i < shown.rgb.size(); ++i) shown.rgb[i] = rgb[i] / 255.0f;
+        }
+        const Image& img = cfg_.panel ? shown : plain_;
         if (img.pixel_count() == 0) throw std::runtime_error("no frame was rendered, nothing to save");
         FrameOutput out{&img, &img, nullptr, AovSet{}};
         write_frame(path, out);
@@ -308,7 +361,10 @@ private:
     PhotonMaps photons_;
     std::uint64_t generation_ = 0, shown_generation_ = 0;
     std::optional<FinishedFrame> last_;
-    Image plain_, displayed_;
+    Image plain_;
+    std::uint32_t max_spp_, light_samples_;
+    FrameHistory history_;
+    PanelActions pending_;
     std::vector<unsigned char> bytes_;
     bool recompose_ = false;
     int frames_shown_ = 0;

@@ -31,7 +31,7 @@ struct ViewerConfig {
     int frames = 0;
     int fly_frames = 0;
     std::string screenshot;
-    bool overlay = false;  // scripted screenshots include the stats text
+    bool panel = false;  // scripted runs show the control panel, and screenshots include it
 };
 
 // Runs the window until Esc / close, or the scripted frames; returns the exit code.

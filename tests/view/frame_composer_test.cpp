@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <limits>
 
 #include "runtime/view/frame_composer.h"
@@ -62,4 +63,17 @@ TEST_CASE("frame composer scales previews by pixel replication and rounds to 8 b
     CHECK(bytes == std::vector<unsigned char>{0, 128, 0});
     CHECK(heat_color(0.0f) == glm::vec3(0.0f));
     CHECK(heat_color(1.0f) == glm::vec3(1.0f));
+}
+
+TEST_CASE("density legend scale spans the shown frame's 1st to 99th percentile", "[view][composer]") {
+    std::vector<float> density;
+    for (int i = 1; i <= 1000; ++i) density.push_back(static_cast<float>(i));
+    density.push_back(0.0f);  // a miss: no density
+    const DensityScale scale = density_scale(density);
+    REQUIRE(scale.valid);
+    CHECK(std::exp(scale.log_lo) == Approx(11.0f).epsilon(1e-5));
+    CHECK(std::exp(scale.log_hi) == Approx(990.0f).epsilon(1e-5));
+    CHECK(density_scale_position(scale, scale.log_lo) == Approx(0.1f));
+    CHECK(density_scale_position(scale, scale.log_hi) == Approx(1.0f));
+    CHECK_FALSE(density_scale({0.0f, -1.0f}).valid);
 }

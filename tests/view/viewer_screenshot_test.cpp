@@ -137,6 +137,47 @@ TEST_CASE("kdpm-view screenshot of the Cornell box matches kdpm-render", "[view]
     }
 }
 
+TEST_CASE("kdpm-view --panel shows the control panel over the image, and only there", "[view][e2e][panel]") {
+    if (!have_tools() || !have_xvfb_run()) {
+        WARN("kdpm-view, the scene tools or xvfb-run are missing: skipped");
+        return;
+    }
+    test::TempDir dir;
+    const std::string kdg = (dir / "cornell.kdg").string();
+    REQUIRE(test::run_tool("kdpm-build-geometry " + test::source_path("scenes/cornell-box/cornell-box.json") +
+                           " -o " + kdg + " --quiet").exit_code == 0);
+    const fs::path plain = dir / "plain.png", panel = dir / "panel.png";
+    const std::string common = test::tool_path("kdpm-view") + " " + kdg +
+                               " --width 480 --height 360 --mode direct --light-samples 2 --backend cpu --frames 1 --quiet";
+    auto r = shell(kViewerEnv + "xvfb-run -a " + common + " --screenshot " + plain.string());
+    if (r.exit_code != 0 && display_unavailable(r)) {
+        WARN("no X server could be started under xvfb-run: skipped (" << r.output << ")");
+        return;
+    }
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    r = shell(kViewerEnv + "xvfb-run -a " + common + " --panel --screenshot " + panel.string());
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const Pixels a = read_rgb(plain), b = read_rgb(panel);
+    REQUIRE(a.width == 480);
+    REQUIRE(b.width == a.width);
+    REQUIRE(b.height == a.height);
+    // Mean difference inside a box: the panel sits at the top left, the rest is the image.
+    auto box_difference = [&](int x0, int y0, int x1, int y1) {
+        double sum = 0.0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 3 + c;
+                    sum += std::fabs(a.rgb[i] - b.rgb[i]);
+                }
+        return sum / (3.0 * (x1 - x0) * (y1 - y0));
+    };
+    CHECK(box_difference(12, 12, 200, 120) > 0.05);
+    CHECK(box_difference(330, 250, 480, 360) < 0.004);
+}
+
 TEST_CASE("kdpm-view refuses bad input with a one-line error", "[view][e2e]") {
     if (!fs::exists(test::tool_path("kdpm-view"))) {
         WARN("kdpm-view is not built (no GLFW or OpenGL): skipped");

@@ -39,7 +39,7 @@ int run(int argc, char** argv) {
         .option("frames", &cfg.frames, "N", "scripted: render N full-resolution frames, then exit", 1, 100000)
         .option("fly", &cfg.fly_frames, "N", "scripted: first fly forward for N preview frames", 1, 100000)
         .option("screenshot", &cfg.screenshot, "FILE", "scripted: save the last frame as displayed (PNG, ...)")
-        .flag("overlay", &cfg.overlay, "scripted screenshots include the stats text")
+        .flag("panel", &cfg.panel, "scripted: show the control panel; the screenshot is the window as shown")
         .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
         .flag("quiet", &cfg.quiet, "print nothing but errors");
     cli::add_camera_options(args, cfg.camera);

@@ -12,6 +12,9 @@ set_target_properties(kdpm_runtime PROPERTIES EXPORT_NAME runtime)
 
 set(kdpm_exported kdpm_formats kdpm_runtime kdpm_render kdpm_photon_shooter kdpm_backend kdpm_backend_cpu
     kdpm_geometry_runtime kdpm_runtime_photons kdpm_oiio)
+if(TARGET kdpm_cudart)
+  list(APPEND kdpm_exported kdpm_cudart)
+endif()
 install(TARGETS ${kdpm_exported} EXPORT kdpm-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -14,6 +14,8 @@
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/shading/constants.h"
+#include "runtime/shading/diffuse.h"
 
 namespace kdpm {
 
@@ -155,8 +157,7 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
         flux += w * pw;
     }
     const float norm = params.cone_filter ? 1.0f - 2.0f / (3.0f * cone_k) : 1.0f;
-    constexpr float kPi = 3.14159265358979f;
-    out.radiance = albedo * (1.0f / kPi) * flux / (kPi * r2 * norm);
+    out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);
     out.radius = r;
     return out;
 }

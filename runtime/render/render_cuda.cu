@@ -8,7 +8,7 @@
 #include "runtime/backend/cuda_parallel_for.cuh"
 #include "runtime/backend/device_buffer.h"
 #include "runtime/render/frame_backend.h"
-#include "runtime/render/light_distribution.h"
+#include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
 
@@ -63,9 +63,9 @@ public:
         device_geometry_.materials = upload(owned_, h.materials, h.material_count);
         device_geometry_.lights = upload(owned_, h.lights, h.light_count);
         device_photons_ = upload_photon_maps(owned_, scene.photons);
-        const std::vector<float> cdf = light_power_cdf(h);
-        device_lights_ = LightDistributionView{upload(owned_, cdf.data(), cdf.size()),
-                                               static_cast<std::uint32_t>(cdf.size())};
+        const LightPowerTable lights = light_power_table(h);
+        device_lights_ = lights.selection();
+        device_lights_.cdf = upload(owned_, lights.cdf.data(), lights.cdf.size());
         upload_ms_ = watch.lap_ms();
     }
 
@@ -100,7 +100,7 @@ private:
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;
-    LightDistributionView device_lights_;
+    LightSelection device_lights_;
     double upload_ms_ = 0.0;
 };
 

@@ -59,12 +59,16 @@ struct PhotonGatherPass {
 inline constexpr float kAutoRadiusFactor = 4.0f;
 
 // direct_light: the mode adds direct light by shadow rays, so direct photon hits are skipped.
-// max_radius < 0: automatic (see kAutoRadiusFactor); 0: unlimited.
+// max_radius < 0: automatic (see kAutoRadiusFactor); 0: unlimited. cone_filter and
+// disc_flatten: RadianceEstimateParams::cone_filter and ::flatten (DiscMetric).
 inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, std::uint32_t k,
-                                         float max_radius = -1.0f) {
+                                         float max_radius = -1.0f, bool cone_filter = false,
+                                         float disc_flatten = 0.0f) {
     PhotonGatherPass pass;
     pass.maps = maps;
     pass.global_params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    pass.global_params.cone_filter = cone_filter;
+    pass.global_params.flatten = disc_flatten > 0.0f ? disc_flatten : 0.0f;
     if (max_radius < 0.0f)
         max_radius = maps.typical_radius > 0.0f
                          ? kAutoRadiusFactor * maps.typical_radius * sqrtf(static_cast<float>(pass.global_params.k) / 32.0f)

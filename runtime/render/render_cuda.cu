@@ -51,7 +51,7 @@ const T* upload(std::vector<DeviceBuffer>& owned, const T* host, std::uint64_t c
 
 class CudaFrameBackend final : public FrameBackend {
 public:
-    explicit CudaFrameBackend(const SceneViews& scene) : scene_(scene) {
+    explicit CudaFrameBackend(const SceneViews& scene) {
         StopWatch watch;
         cuda_check(cudaSetDevice(0), "cudaSetDevice");
         const GeometryView& h = scene.geometry;
@@ -71,8 +71,9 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CudaDevice device;
-        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings.k,
-                                                          plan.settings.max_radius);
+        const PhotonGatherPass gather =
+            make_gather_pass(device_photons_, plan.direct_light, plan.settings.k, plan.settings.max_radius,
+                             plan.settings.cone_filter, plan.settings.disc_flatten);
         run_frame(device, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
     double upload_ms() const override { return upload_ms_; }
@@ -96,7 +97,6 @@ private:
         return d;
     }
 
-    SceneViews scene_;
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;

@@ -33,6 +33,8 @@ struct TracePass {
         glm::vec3 origin, direction, throughput;
         std::uint32_t depth;
     };
+    // Mirrors and glass push at most two rays per hit; beyond kStack pending rays (deep chains
+    // of glass) the further branches are dropped like rays past max_depth.
     static constexpr int kStack = 8;
 
     KDPM_HD void operator()(std::uint64_t item) const {

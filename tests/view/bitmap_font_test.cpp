@@ -2,6 +2,7 @@
 
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "runtime/view/bitmap_font.h"
 
@@ -64,12 +65,39 @@ TEST_CASE("bitmap font survives unknown characters and text off the image", "[vi
     CHECK(BitmapFont::row('\x01', 0) == 0x1f);
     CHECK(BitmapFont::row('A', -1) == 0);
     CHECK(BitmapFont::row('A', 7) == 0);
-    Image small(8, 8);
-    draw_text(small, -100, -3, "off the left edge", glm::vec3(1.0f));
-    draw_text(small, 6, 5, "clipped\nat the corner", glm::vec3(1.0f), 3);
-    draw_text(small, 1000, 1000, "far away", glm::vec3(1.0f));
-    darken_rect(small, -5, -5, 100, 100, 0.5f);
-    SUCCEED("no out-of-bounds write (run under the asan preset to check)");
+    // Text partly off the image draws exactly the visible part of the same text drawn on a
+    // larger canvas (out-of-bounds writes themselves are caught by the asan preset).
+    auto clipped = [](int x, int y, const std::string& text, int scale) {
+        Image small(8, 8);
+        draw_text(small, x, y, text, glm::vec3(1.0f), scale);
+        return small;
+    };
+    auto cropped = [](int x, int y, const std::string& text, int scale) {
+        const int pad = 200;
+        Image big(8 + 2 * pad, 8 + 2 * pad), crop(8, 8);
+        draw_text(big, x + pad, y + pad, text, glm::vec3(1.0f), scale);
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i)
+                for (int c = 0; c < 3; ++c)
+                    crop.rgb[(static_cast<std::size_t>(j) * 8 + i) * 3 + c] =
+                        big.rgb[(static_cast<std::size_t>(j + pad) * big.width + i + pad) * 3 + c];
+        return crop;
+    };
+    for (auto [x, y, text, scale] : {std::tuple{-100, -3, std::string("off the left edge"), 1},
+                                     std::tuple{3, 1, std::string("clipped\nat the corner"), 3},
+                                     std::tuple{-2, -4, std::string("Wg"), 2}}) {
+        INFO(text << " at " << x << ", " << y);
+        const Image a = clipped(x, y, text, scale);
+        CHECK(a.rgb == cropped(x, y, text, scale).rgb);
+        CHECK(lit(a) > 0);
+    }
+    const Image far = clipped(1000, 1000, "far away", 1);
+    CHECK(far.rgb == Image(8, 8).rgb);
+    // A rectangle larger than the image darkens every pixel, and only by the factor.
+    Image dark = clipped(-2, -4, "Wg", 2);
+    const Image before = dark;
+    darken_rect(dark, -5, -5, 100, 100, 0.5f);
+    for (std::size_t i = 0; i < dark.rgb.size(); ++i) CHECK(dark.rgb[i] == before.rgb[i] * 0.5f);
 }
 
 TEST_CASE("bitmap font measures multi-line text", "[view][font]") {

@@ -13,9 +13,7 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
-        const PhotonGatherPass gather =
-            make_gather_pass(scene_.photons, plan.direct_light, plan.settings.k, plan.settings.max_radius,
-                             plan.settings.cone_filter, plan.settings.disc_flatten);
+        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
         run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
     }
 

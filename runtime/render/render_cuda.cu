@@ -71,9 +71,7 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CudaDevice device;
-        const PhotonGatherPass gather =
-            make_gather_pass(device_photons_, plan.direct_light, plan.settings.k, plan.settings.max_radius,
-                             plan.settings.cone_filter, plan.settings.disc_flatten);
+        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings);
         run_frame(device, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
     double upload_ms() const override { return upload_ms_; }

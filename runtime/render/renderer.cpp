@@ -70,6 +70,10 @@ RenderResult Renderer::render(const RenderSettings& settings) {
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");
     if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
+    if (plan.gather_photons && settings.fixed_radius &&
+        !(settings.max_radius > 0.0f || (settings.max_radius < 0.0f && scene_.photons.typical_radius > 0.0f)))
+        throw std::runtime_error(
+            "a fixed-radius gather needs a radius: the photon map records none, give one (--max-radius R > 0)");
 
     RenderResult result;
     impl_->run(plan, result.linear, result.aovs, result.times);

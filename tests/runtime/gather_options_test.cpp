@@ -1,6 +1,6 @@
-// kdpm-render's photon estimate options end to end: --filter cone and --disc F reach the gather
-// kernel (the image changes) and, on the Cornell box's flat walls, estimate the same radiance as
-// the default box filter and sphere; bad values give a one-line error.
+// kdpm-render's photon estimate options end to end: --filter cone, --disc F and --gather radius
+// reach the gather kernel (the image changes) and, on the Cornell box's flat walls, estimate the
+// same radiance as the default (k nearest, box filter, sphere); bad values give an error.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -33,7 +33,7 @@ double mean(const std::vector<float>& v) {
 
 }  // namespace
 
-TEST_CASE("kdpm-render's cone filter and disc search change the photon estimate but not its mean", "[render][tools]") {
+TEST_CASE("kdpm-render's cone filter, disc search and fixed radius change the photon estimate but not its mean", "[render][tools]") {
     test::TempDir dir;
     const std::string kdg = (dir / "scene.kdg").string(), kdph = (dir / "scene.kdph").string(),
                       kdp = (dir / "scene.kdp").string();
@@ -52,14 +52,17 @@ TEST_CASE("kdpm-render's cone filter and disc search change the photon estimate 
         REQUIRE(r.exit_code == 0);
         return read_rgb(out);
     };
-    const auto box = render("box", ""), cone = render("cone", "--filter cone"), disc = render("disc", "--disc 8");
-    CHECK(render("box_named", "--filter box") == box);
+    const auto box = render("box", ""), cone = render("cone", "--filter cone"), disc = render("disc", "--disc 8"),
+               radius = render("radius", "--gather radius");
+    CHECK(render("box_named", "--filter box --gather knn") == box);
     CHECK(cone != box);
     CHECK(disc != box);
+    CHECK(radius != box);
     CHECK(mean(cone) == Approx(mean(box)).epsilon(0.1));
     CHECK(mean(disc) == Approx(mean(box)).epsilon(0.1));
+    CHECK(mean(radius) == Approx(mean(box)).epsilon(0.1));
 
-    for (const std::string bad : {"--filter gauss", "--disc -1"}) {
+    for (const std::string bad : {"--filter gauss", "--disc -1", "--gather all", "--gather radius --max-radius 0"}) {
         auto r = test::run_tool("kdpm-render " + kdg + " " + kdp + " --backend cpu " + bad + " -o " +
                                 (dir / "bad.png").string());
         INFO(bad << "\n" << r.output);

@@ -60,6 +60,13 @@ int run(int argc, char** argv) {
                     if (v != "box" && v != "cone") throw std::invalid_argument("expected box or cone, got '" + v + "'");
                     settings.cone_filter = v == "cone";
                 })
+        .option("gather", "knn|radius",
+                "photons per estimate: the k nearest (default), or every photon within --max-radius (default: the "
+                "typical radius of k photons)",
+                [&](const std::string& v) {
+                    if (v != "knn" && v != "radius") throw std::invalid_argument("expected knn or radius, got '" + v + "'");
+                    settings.fixed_radius = v == "radius";
+                })
         .option("disc", &disc, "F",
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)

@@ -1,8 +1,25 @@
 #include "formats/section_ids.h"
 
+#include "formats/photon_layout.h"
+
 namespace kdpm::section {
 
-std::string_view name(std::uint32_t id) {
+namespace {
+
+// The section of each map's field, or "" when `id` is no photon tree section.
+std::string photon_tree_name(std::uint32_t id) {
+    static constexpr const char* kFields[] = {"info", "nodes", "x", "y", "z", "power", "direction", "flags"};
+    static constexpr std::uint32_t kFieldCount = sizeof kFields / sizeof kFields[0];
+    for (PhotonMapKind map : {PhotonMapKind::global, PhotonMapKind::caustic})
+        for (std::uint32_t f = 0; f < kFieldCount; ++f)
+            if (id == photon_tree_section(map, static_cast<PhotonTreeField>(f)))
+                return std::string(map == PhotonMapKind::global ? "photon_tree." : "caustic_tree.") + kFields[f];
+    return "";
+}
+
+}  // namespace
+
+std::string name(std::uint32_t id) {
     switch (id) {
         case metadata: return "metadata";
         case geo_info: return "geometry.info";
@@ -15,23 +32,7 @@ std::string_view name(std::uint32_t id) {
         case geo_camera: return "geometry.camera";
         case hits_info: return "hits.info";
         case hits_photons: return "hits.photons";
-        case ptree_info: return "photon_tree.info";
-        case ptree_nodes: return "photon_tree.nodes";
-        case ptree_pos_x: return "photon_tree.x";
-        case ptree_pos_y: return "photon_tree.y";
-        case ptree_pos_z: return "photon_tree.z";
-        case ptree_power: return "photon_tree.power";
-        case ptree_direction: return "photon_tree.direction";
-        case ptree_flags: return "photon_tree.flags";
-        case ptree_caustic_info: return "caustic_tree.info";
-        case ptree_caustic_nodes: return "caustic_tree.nodes";
-        case ptree_caustic_pos_x: return "caustic_tree.x";
-        case ptree_caustic_pos_y: return "caustic_tree.y";
-        case ptree_caustic_pos_z: return "caustic_tree.z";
-        case ptree_caustic_power: return "caustic_tree.power";
-        case ptree_caustic_direction: return "caustic_tree.direction";
-        case ptree_caustic_flags: return "caustic_tree.flags";
-        default: return "";
+        default: return photon_tree_name(id);
     }
 }
 

@@ -2,7 +2,7 @@
 // Section ids of every kdpm file kind, in one place so that tools can name sections they print.
 // Ids are unique across kinds; a reader skips ids it does not know (newer minor versions).
 #include <cstdint>
-#include <string_view>
+#include <string>
 
 namespace kdpm::section {
 
@@ -22,28 +22,12 @@ inline constexpr std::uint32_t geo_camera = 0x107;     // CameraRecord, one reco
 inline constexpr std::uint32_t hits_info = 0x200;      // PhotonHitsInfo, one record
 inline constexpr std::uint32_t hits_photons = 0x201;   // PhotonHit[]
 
-// photon kd-tree (.kdp)
-inline constexpr std::uint32_t ptree_info = 0x300;     // PhotonTreeInfo, one record
-inline constexpr std::uint32_t ptree_nodes = 0x301;    // KdNode[]
-inline constexpr std::uint32_t ptree_pos_x = 0x302;    // f32[] positions in leaf order
-inline constexpr std::uint32_t ptree_pos_y = 0x303;
-inline constexpr std::uint32_t ptree_pos_z = 0x304;
-inline constexpr std::uint32_t ptree_power = 0x305;    // u32 RGBE power, one per photon
-inline constexpr std::uint32_t ptree_direction = 0x306;  // PackedPhotonDirections[] (octahedral)
-inline constexpr std::uint32_t ptree_flags = 0x307;    // u32 flags per photon (caustic, bounce)
-// the caustic map of the same .kdp: the same fields at 0x310 + field (formats/photon_layout.h)
-inline constexpr std::uint32_t ptree_caustic_info = 0x310;
-inline constexpr std::uint32_t ptree_caustic_nodes = 0x311;
-inline constexpr std::uint32_t ptree_caustic_pos_x = 0x312;
-inline constexpr std::uint32_t ptree_caustic_pos_y = 0x313;
-inline constexpr std::uint32_t ptree_caustic_pos_z = 0x314;
-inline constexpr std::uint32_t ptree_caustic_power = 0x315;
-inline constexpr std::uint32_t ptree_caustic_direction = 0x316;
-inline constexpr std::uint32_t ptree_caustic_flags = 0x317;
+// photon kd-tree (.kdp): photon_tree_section(map, field) in formats/photon_layout.h, the only
+// definition of those ids (0x300 + 0x10 * map + field); name() derives their names from it.
 
 // test containers
 inline constexpr std::uint32_t test_first = 0xF00;
 
-std::string_view name(std::uint32_t id);  // "" when unknown
+std::string name(std::uint32_t id);  // "" when unknown
 
 }  // namespace kdpm::section

@@ -89,12 +89,6 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     return w;
 }
 
-KdTreeStats write_geometry_file(const Scene& scene, const KdBuildParams& params, const std::filesystem::path& path) {
-    GeometryBuild b = build_geometry_file(scene, params);
-    b.writer.write(path);
-    return b.stats;
-}
-
 Scene scene_from_triangles(std::vector<TriangleRecord> triangles) {
     Scene s;
     s.triangles = std::move(triangles);

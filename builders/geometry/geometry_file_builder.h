@@ -1,7 +1,6 @@
 #pragma once
 // Scene -> SAH kd-tree -> the sections of a .kdg file. Used by kdpm-build-geometry and by any
 // test that needs a geometry file built in-process from its own triangles.
-#include <filesystem>
 #include <functional>
 
 #include "builders/geometry/kd_build_params.h"
@@ -24,9 +23,6 @@ GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& param
 // The sections of a .kdg file for `scene` with an already built `tree` (tests use it to write
 // deliberately broken trees).
 ContainerWriter assemble_geometry_file(const Scene& scene, const KdTree& tree, const KdBuildParams& params);
-
-// The same, written atomically to `path`.
-KdTreeStats write_geometry_file(const Scene& scene, const KdBuildParams& params, const std::filesystem::path& path);
 
 // A scene from bare triangles (one white diffuse material, no lights, framed camera): tests.
 Scene scene_from_triangles(std::vector<TriangleRecord> triangles);

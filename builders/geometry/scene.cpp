@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "formats/math_constants.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {
@@ -16,8 +17,6 @@ void cross(const float (&a)[3], const float (&b)[3], float (&out)[3]) {
 }
 
 float length(const float (&a)[3]) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-
-constexpr float kPi = 3.14159265358979f;
 
 }  // namespace
 

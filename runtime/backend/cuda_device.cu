@@ -18,12 +18,8 @@ CudaDeviceStatus cuda_device_status() {
         s.reason = "no device found";
         return s;
     }
-    cudaDeviceProp prop{};
-    if (cudaGetDeviceProperties(&prop, 0) == cudaSuccess) s.device_name = prop.name;
     s.device_count = count;
     return s;
 }
-
-bool cuda_backend_built() { return true; }
 
 }  // namespace kdpm

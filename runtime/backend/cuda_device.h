@@ -7,11 +7,9 @@ namespace kdpm {
 
 struct CudaDeviceStatus {
     int device_count = 0;
-    std::string device_name;  // of device 0, when there is one
     std::string reason;       // why there is no usable device (empty when device_count > 0)
 };
 
 CudaDeviceStatus cuda_device_status();
-bool cuda_backend_built();
 
 }  // namespace kdpm

@@ -9,6 +9,4 @@ CudaDeviceStatus cuda_device_status() {
     return s;
 }
 
-bool cuda_backend_built() { return false; }
-
 }  // namespace kdpm

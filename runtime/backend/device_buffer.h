@@ -2,7 +2,6 @@
 // A block of GPU memory owned by one object (CUDA backend only). Mapped file sections are
 // uploaded with one copy each, straight from the mapped pointer.
 #include <cstddef>
-#include <span>
 
 namespace kdpm {
 
@@ -11,10 +10,6 @@ public:
     DeviceBuffer() = default;
     explicit DeviceBuffer(std::size_t bytes);  // uninitialised device memory
     static DeviceBuffer upload(const void* host, std::size_t bytes);
-    template <class T>
-    static DeviceBuffer upload(std::span<const T> items) {
-        return upload(items.data(), items.size_bytes());
-    }
     DeviceBuffer(DeviceBuffer&& o) noexcept;
     DeviceBuffer& operator=(DeviceBuffer&& o) noexcept;
     DeviceBuffer(const DeviceBuffer&) = delete;

@@ -2,24 +2,21 @@
 
 #include "formats/section_ids.h"
 #include "formats/tree_validation.h"
-#include "formats/validate_kinds.h"
 
 namespace kdpm {
 
-GeometryFile GeometryFile::open(const std::filesystem::path& path, bool verify_checksums) {
-    return GeometryFile(ContainerReader::open(path, FileKind::geometry), verify_checksums);
+GeometryFile GeometryFile::open(const std::filesystem::path& path) {
+    return GeometryFile(ContainerReader::open(path, FileKind::geometry));
 }
 
-GeometryFile GeometryFile::from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                                      bool verify_checksums) {
-    return GeometryFile(ContainerReader::from_bytes(bytes, name, FileKind::geometry), verify_checksums);
+GeometryFile GeometryFile::from_bytes(std::span<const std::uint8_t> bytes, const std::string& name) {
+    return GeometryFile(ContainerReader::from_bytes(bytes, name, FileKind::geometry));
 }
 
-GeometryFile::GeometryFile(ContainerReader reader, bool verify_checksums) : reader_(std::move(reader)) {
-    if (verify_checksums) reader_.verify();
-    // The structural validator is linear in the file size and checks every index the kernels
-    // follow, so after it the traversal cannot leave the arrays or overflow its stack.
-    validate_geometry_file(reader_, ValidationOptions{});
+GeometryFile::GeometryFile(ContainerReader reader) : reader_(std::move(reader)) {
+    // Checksums, then the structural validator: linear in the file size, it checks every index
+    // the kernels follow, so after it the traversal cannot leave the arrays or overflow its stack.
+    validate_file(reader_, ValidationOptions{});
 
     const auto nodes = reader_.section<KdNode>(section::geo_nodes);
     const auto leaf = reader_.section<std::uint32_t>(section::geo_leaf_indices);

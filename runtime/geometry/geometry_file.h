@@ -1,7 +1,7 @@
 #pragma once
-// A .kdg file opened for rendering: memory-mapped (no copy), structurally checked once on open
-// (required sections, record sizes, every index in range, tree shape and depth), then exposed
-// as a GeometryView that kernels can use directly.
+// A .kdg file opened for rendering: memory-mapped (no copy), checked once on open like every
+// kdpm file the runtime loads (section checksums, required sections, record sizes, every index
+// in range, tree shape and depth), then exposed as a GeometryView that kernels can use directly.
 #include <filesystem>
 #include <span>
 #include <string>
@@ -15,11 +15,9 @@ namespace kdpm {
 class GeometryFile {
 public:
     // Throws FormatError with a one-line reason for a missing, corrupt or foreign file.
-    // verify_checksums also hashes every section (slower; kdpm-validate always does).
-    static GeometryFile open(const std::filesystem::path& path, bool verify_checksums = false);
+    static GeometryFile open(const std::filesystem::path& path);
     // Over a copy of the caller's bytes (tests).
-    static GeometryFile from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
-                                   bool verify_checksums = false);
+    static GeometryFile from_bytes(std::span<const std::uint8_t> bytes, const std::string& name);
 
     const GeometryView& view() const { return view_; }
     const GeometryInfo& info() const { return view_.info; }
@@ -32,7 +30,7 @@ public:
     std::span<const AreaLightRecord> lights() const { return {view_.lights, view_.light_count}; }
 
 private:
-    explicit GeometryFile(ContainerReader reader, bool verify_checksums);
+    explicit GeometryFile(ContainerReader reader);
     ContainerReader reader_;
     GeometryView view_{};
     CameraRecord camera_{};

@@ -3,6 +3,7 @@
 // (occlusion). The ray is first clipped to the scene bounds; inner nodes are visited near
 // child first, the far child is pushed only when the segment crosses the split plane, and the
 // walk stops as soon as a hit lies within the current leaf's segment.
+#include <cassert>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -52,6 +53,9 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
     float tmin = ray.tmin, tmax = ray.tmax;
     if (!clip_to_bounds(g.info, ray.origin, inv_dir, tmin, tmax)) return;
 
+    // At most one entry per inner node on the current path. GeometryFile's validator refuses
+    // trees deeper than kMaxKdTreeDepth, so the guard below never drops a push for a loaded
+    // file; debug builds assert it (a hand-built view that breaks the limit would lose subtrees).
     StackEntry stack[kMaxKdDepth];
     std::uint32_t sp = 0;
     std::uint32_t node = 0;
@@ -72,6 +76,7 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
             } else if (tplane < tmin) {
                 node = second;
             } else {
+                assert(sp < kMaxKdDepth && "kd-tree deeper than kMaxKdTreeDepth");
                 if (sp < kMaxKdDepth) stack[sp++] = StackEntry{second, tplane, tmax};
                 node = first;
                 tmax = tplane;

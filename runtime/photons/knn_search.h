@@ -7,6 +7,7 @@
 // Euclidean squared distance (so the split-plane test stays a valid lower bound): Euclidean,
 // or DiscMetric, which flattens the search sphere toward a surface against light leaks.
 // Accept: photon index -> bool, a filter applied to photons inside the current radius.
+#include <cassert>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -96,6 +97,9 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
         float d2;        // squared distance from q to the cell
         float off[3];    // per-axis offset from q to the cell (0 inside the slab)
     };
+    // At most one entry per inner node on the current path: the .kdp validator refuses trees
+    // deeper than kMaxPhotonTreeDepth, so the guard below never drops a push for a loaded file;
+    // debug builds assert it.
     Entry stack[kMaxPhotonTreeDepth + 1];
     std::uint32_t top = 0;
     std::uint32_t node = 0;
@@ -114,6 +118,7 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             float far_off[3] = {off[0], off[1], off[2]};
             far_off[axis] = d;
             const float far_d2 = far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
+            assert(top <= kMaxPhotonTreeDepth && "photon tree deeper than kMaxPhotonTreeDepth");
             if (far_d2 < max_d2 && top <= kMaxPhotonTreeDepth) {
                 Entry& e = stack[top++];
                 e.node = far_child;

@@ -23,7 +23,7 @@ __global__ void gather(PhotonMapView map, const glm::vec3* points, glm::vec3* ra
     radius_search(map, points[i], params.max_radius, CountVisits{count});
 }
 
-__global__ void shoot(GeometryView g, LightTable lights, ShootSettings s, PhotonHit* slots, PhotonPathResult* results,
+__global__ void shoot(GeometryView g, LightSelection lights, ShootSettings s, PhotonHit* slots, PhotonPathResult* results,
                       unsigned n) {
     const unsigned i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n) return;

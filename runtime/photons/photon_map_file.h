@@ -1,6 +1,7 @@
 #pragma once
-// A photon kd-tree file (.kdp) mapped read-only and checked (container, checksums, tree
-// invariants), exposing each photon map as a PhotonMapView over the mapping.
+// A photon kd-tree file (.kdp) mapped read-only and checked once on open like every kdpm file the
+// runtime loads (section checksums, then the tree invariants), exposing each photon map as a
+// PhotonMapView over the mapping.
 #include <filesystem>
 
 #include "formats/container_reader.h"

@@ -16,9 +16,14 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/geometry/surface_normal.h"
-#include "runtime/photons/counter_random.h"
-#include "runtime/photons/light_table.h"
-#include "runtime/photons/photon_sampling.h"
+#include "runtime/shading/area_light.h"
+#include "runtime/shading/color.h"
+#include "runtime/shading/constants.h"
+#include "runtime/shading/counter_random.h"
+#include "runtime/shading/diffuse.h"
+#include "runtime/shading/ray_offset.h"
+#include "runtime/shading/specular.h"
+#include "runtime/shading/surface_point.h"
 
 namespace kdpm {
 
@@ -36,28 +41,16 @@ struct PhotonPathResult {
 
 namespace photon_path_detail {
 
-KDPM_HD KDPM_INLINE float max3(const glm::vec3& v) { return v.x > v.y ? (v.x > v.z ? v.x : v.z) : (v.y > v.z ? v.y : v.z); }
-
 KDPM_HD KDPM_INLINE void put3(float (&dst)[3], const glm::vec3& v) {
     dst[0] = v.x;
     dst[1] = v.y;
     dst[2] = v.z;
 }
 
-// Russian roulette on a reflectance: survive with probability max channel, then rescale the
-// power so its expectation is power * reflectance. False when the path ends.
-KDPM_HD KDPM_INLINE bool roulette(glm::vec3& power, const glm::vec3& reflectance, float u) {
-    float q = max3(reflectance);
-    q = q > 1.0f ? 1.0f : q;
-    if (!(q > 0.0f) || u >= q) return false;
-    power *= reflectance / q;
-    return true;
-}
-
 }  // namespace photon_path_detail
 
 // Traces path `path`; `out` has room for max_bounces + 1 hits.
-KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const LightTable& lights,
+KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const LightSelection& lights,
                                                   const ShootSettings& s, std::uint64_t path, PhotonHit* out) {
     using namespace photon_path_detail;
     PhotonPathResult result;
@@ -65,18 +58,17 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
 
     // Emission (bounce stream 0, dimensions 0..4).
     auto rnd = [&](std::uint32_t stream, std::uint32_t dim) { return counter_random(s.seed, path, stream, dim); };
-    const AreaLightRecord& light = lights.lights[pick_light(lights, rnd(0, 0))];
-    const glm::vec3 p0 = to_vec3(light.p0), e1 = to_vec3(light.e1), e2 = to_vec3(light.e2);
-    const glm::vec3 light_normal = glm::normalize(glm::cross(e1, e2));
+    const AreaLightRecord& light = g.lights[pick_light(lights, rnd(0, 0))];
+    const glm::vec3 emit_normal = light_normal(light);
     const float u1 = rnd(0, 1), u2 = rnd(0, 2);
-    glm::vec3 origin = light.shape == static_cast<std::uint32_t>(LightShape::triangle)
-                           ? triangle_point(p0, e1, e2, u1, u2)
-                           : p0 + u1 * e1 + u2 * e2;
-    glm::vec3 direction = cosine_direction(light_normal, rnd(0, 3), rnd(0, 4));
-    origin += s.ray_offset * light_normal;
-    // Flux pi A L of this light over the probability of choosing it, shared by N paths.
+    glm::vec3 origin = point_on_light(light, u1, u2);
+    glm::vec3 direction = cosine_direction(emit_normal, rnd(0, 3), rnd(0, 4));
+    origin = offset_origin(origin, emit_normal, s.ray_offset, true);
+    // Flux pi A L of this light over the probability of choosing it, shared by N paths. (The
+    // probability is power / total rather than pick_probability's cdf difference: equal but for
+    // rounding, and the photon files made so far are a function of this one.)
     const float choose = light.power / lights.total_power;
-    glm::vec3 power = (kPhotonPi * light.area / (choose * static_cast<float>(s.emitted_count))) * to_vec3(light.radiance);
+    glm::vec3 power = (kPi * light.area / (choose * static_cast<float>(s.emitted_count))) * to_vec3(light.radiance);
 
     bool specular_only = true;
     for (std::uint32_t bounce = 0;; ++bounce) {
@@ -88,14 +80,14 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
         const glm::vec3 ng = geometric_normal(tri);
         const bool front = glm::dot(direction, ng) < 0.0f;
         const glm::vec3 n = front ? ng : -ng;  // the side the photon arrived from
-        const MaterialRecord& m = g.materials[tri.material < g.material_count ? tri.material : 0];
+        const MaterialRecord m = material_of(g, hit.triangle);
         const auto kind = static_cast<MaterialKind>(m.kind);
         const std::uint32_t stream = bounce + 1;
         const float u_rr = rnd(stream, 0);
 
         if (kind == MaterialKind::mirror) {
-            if (bounce >= s.max_bounces || !roulette(power, to_vec3(m.specular), u_rr)) break;
-            direction = glm::normalize(reflect_about(direction, n));
+            if (bounce >= s.max_bounces || !russian_roulette(power, to_vec3(m.specular), u_rr)) break;
+            direction = glm::normalize(reflect_dir(direction, n));
         } else if (kind == MaterialKind::glass) {
             const float ior = m.ior > 0.0f ? m.ior : 1.5f;
             const float eta = front ? 1.0f / ior : ior;
@@ -104,10 +96,10 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
             const float fresnel = dielectric_fresnel(cos_i, eta, cos_t);
             if (bounce >= s.max_bounces) break;
             if (rnd(stream, 3) < fresnel) {
-                direction = glm::normalize(reflect_about(direction, n));
+                direction = glm::normalize(reflect_dir(direction, n));
             } else {
-                if (!roulette(power, to_vec3(m.transmission), u_rr)) break;
-                direction = refract_through(direction, n, eta, cos_i, cos_t);
+                if (!russian_roulette(power, to_vec3(m.transmission), u_rr)) break;
+                direction = refract_dir(direction, n, eta, cos_i, cos_t);
             }
         } else {
             PhotonHit& h = out[result.stored++];
@@ -120,11 +112,11 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
             put3(h.normal, n);
             h.reserved1 = 0;
             specular_only = false;
-            if (bounce >= s.max_bounces || !roulette(power, to_vec3(m.diffuse), u_rr)) break;
+            if (bounce >= s.max_bounces || !russian_roulette(power, to_vec3(m.diffuse), u_rr)) break;
             direction = cosine_direction(n, rnd(stream, 1), rnd(stream, 2));
         }
         // Leave the surface on the side the new direction points to.
-        origin = p + (glm::dot(direction, ng) >= 0.0f ? s.ray_offset : -s.ray_offset) * ng;
+        origin = offset_origin(p, ng, s.ray_offset, glm::dot(direction, ng) >= 0.0f);
     }
     return result;
 }

@@ -8,7 +8,6 @@
 
 #include "formats/photon_layout.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/photons/light_table.h"
 
 namespace kdpm {
 
@@ -24,20 +23,9 @@ struct ShotPhotons {
     std::uint64_t rays = 0;
 };
 
-// The lights' cumulative power table (owned storage for a LightTable).
-struct LightDistribution {
-    std::vector<float> cdf;
-    LightTable table(const GeometryView& g) const;
-    static LightDistribution of(const GeometryView& g);
-    float total_power = 0.0f;
-};
-
 // Throws std::invalid_argument when the scene has no light with power, or for more than
 // 2^32 - 1 photons. `progress` receives the fraction done.
 ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
                           const std::function<void(double)>& progress = {});
-
-// Offset of ray origins off surfaces: a small fraction of the scene's size.
-float photon_ray_offset(const GeometryInfo& info);
 
 }  // namespace kdpm

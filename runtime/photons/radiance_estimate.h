@@ -3,7 +3,8 @@
 //   L = sum over the k nearest photons of  f_r * power * w  /  (pi r^2 * norm)
 // with f_r = albedo / pi, r the distance to the k-th photon (or the maximum radius when fewer
 // were found within it), and w a cone filter weight (1 - d / (cone_k r), norm 1 - 2 / (3 cone_k))
-// when enabled. Against light leaks, photons whose stored normal disagrees with the surface
+// when enabled. With fixed_radius, the sum runs over every photon within r = max_radius instead
+// (the fixed-radius estimate of progressive photon mapping). Against light leaks, photons whose stored normal disagrees with the surface
 // normal, or that arrived from behind the surface, are skipped, and the search may be
 // flattened toward the surface (DiscMetric).
 #include <cstdint>
@@ -14,6 +15,9 @@
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/photons/radius_search.h"
+#include "runtime/shading/constants.h"
+#include "runtime/shading/diffuse.h"
 
 namespace kdpm {
 
@@ -26,6 +30,7 @@ struct RadianceEstimateParams {
     float flatten = 0.0f;          // DiscMetric flattening (0: a sphere)
     std::uint32_t min_bounce = 0;  // 1 for "direct + photons": skip the direct-light hits
     std::uint32_t exclude_flags = 0;  // e.g. kPhotonCaustic when the caustic map is gathered separately
+    bool fixed_radius = false;     // every photon within max_radius (> 0) instead of the k nearest
 };
 
 struct RadianceEstimate {
@@ -126,12 +131,44 @@ KDPM_HD KDPM_INLINE glm::vec3 photon_power(std::uint32_t rgbe) {
                      static_cast<float>((rgbe >> 16) & 0xffu) * scale);
 }
 
+// The cone filter's weight of a photon at distance d in a disc of radius r, and its normalisation.
+KDPM_HD KDPM_INLINE float cone_weight(float d, float cone_k, float r) {
+    const float w = 1.0f - d / (cone_k * r);
+    return w < 0.0f ? 0.0f : w;
+}
+KDPM_HD KDPM_INLINE float cone_norm(float cone_k) { return 1.0f - 2.0f / (3.0f * cone_k); }
+
+// The fixed-radius estimate (params.fixed_radius; the search is a sphere, whatever flatten says).
+KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView& map, glm::vec3 position,
+                                                            glm::vec3 albedo, const RadianceEstimateParams& params,
+                                                            const SurfacePhotonFilter& filter) {
+    RadianceEstimate out;
+    const float r = params.max_radius;
+    if (!(r > 0.0f)) return out;
+    const float cone_k = params.cone_k < 1.0f ? 1.0f : params.cone_k;
+    glm::vec3 flux(0.0f);
+    std::uint32_t count = 0;
+    radius_search(map, position, r, [&](std::uint32_t p, float d2) {
+        if (!filter(p)) return;
+        const float w = params.cone_filter ? cone_weight(sqrtf(d2), cone_k, r) : 1.0f;
+        flux += w * photon_power(map.power[p]);
+        ++count;
+    });
+    out.count = count;
+    out.radius = r;
+    if (count == 0) return out;
+    const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
+    out.radiance = lambert_brdf(albedo) * flux / (kPi * (r * r) * norm);
+    return out;
+}
+
 // `normal`: unit surface normal on the viewer's side; `albedo`: the diffuse reflectance.
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                   glm::vec3 albedo, const RadianceEstimateParams& params,
                                                   KnnHeap& heap) {
     RadianceEstimate out;
     const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
+    if (params.fixed_radius) return estimate_radiance_in_radius(map, position, albedo, params, filter);
     std::uint32_t found =
         params.flatten > 0.0f
             ? knn_search(map, position, params.k, params.max_radius, DiscMetric{normal, params.flatten}, filter, heap)
@@ -147,16 +184,11 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     glm::vec3 flux(0.0f);
     for (std::uint32_t i = 0; i < found; ++i) {
         const glm::vec3 pw = photon_power(map.power[heap.index[i]]);
-        float w = 1.0f;
-        if (params.cone_filter) {
-            w = 1.0f - sqrtf(heap.d2[i]) / (cone_k * r);
-            w = w < 0.0f ? 0.0f : w;
-        }
+        const float w = params.cone_filter ? cone_weight(sqrtf(heap.d2[i]), cone_k, r) : 1.0f;
         flux += w * pw;
     }
-    const float norm = params.cone_filter ? 1.0f - 2.0f / (3.0f * cone_k) : 1.0f;
-    constexpr float kPi = 3.14159265358979f;
-    out.radiance = albedo * (1.0f / kPi) * flux / (kPi * r2 * norm);
+    const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
+    out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);
     out.radius = r;
     return out;
 }

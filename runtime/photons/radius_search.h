@@ -1,6 +1,7 @@
 #pragma once
 // The fixed-radius photon search: calls visit(photon index, squared distance) for every photon
 // with squared distance < radius^2 (no order), walking only subtrees whose split plane is closer.
+#include <cassert>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -15,6 +16,7 @@ KDPM_HD void radius_search(const PhotonMapView& map, glm::vec3 q, float radius, 
     if (map.node_count == 0 || !(radius > 0.0f)) return;
     const float r2 = radius * radius;
     const float qc[3] = {q.x, q.y, q.z};
+    // Bounded as in knn_search: the validator's depth limit means no push is ever dropped.
     std::uint32_t stack[kMaxPhotonTreeDepth + 1];
     std::uint32_t top = 0;
     std::uint32_t node = 0;
@@ -23,6 +25,7 @@ KDPM_HD void radius_search(const PhotonMapView& map, glm::vec3 q, float radius, 
         while (!n.is_leaf()) {
             const float d = qc[n.axis()] - n.split();
             const std::uint32_t above = n.above_child();
+            assert(top <= kMaxPhotonTreeDepth && "photon tree deeper than kMaxPhotonTreeDepth");
             if (d * d < r2 && top <= kMaxPhotonTreeDepth) stack[top++] = d < 0.0f ? above : node + 1;
             node = d < 0.0f ? node + 1 : above;
             n = map.nodes[node];

@@ -9,7 +9,7 @@
 
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
-#include "runtime/render/counter_random.h"
+#include "runtime/shading/counter_random.h"
 
 namespace kdpm {
 

@@ -29,7 +29,7 @@ struct FramePlan {
 };
 
 template <class Device>
-void run_frame(Device& dev, const GeometryView& geometry, const LightDistributionView& lights,
+void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                const PhotonGatherPass& gather_template,
                const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;

@@ -14,6 +14,7 @@
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/render/frame_buffers.h"
+#include "runtime/render/render_settings.h"
 #include "runtime/render/tile_order.h"
 
 namespace kdpm {
@@ -59,16 +60,22 @@ struct PhotonGatherPass {
 inline constexpr float kAutoRadiusFactor = 4.0f;
 
 // direct_light: the mode adds direct light by shadow rays, so direct photon hits are skipped.
-// max_radius < 0: automatic (see kAutoRadiusFactor); 0: unlimited.
-inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, std::uint32_t k,
-                                         float max_radius = -1.0f) {
+// From the settings: k, max_radius (< 0: automatic, see kAutoRadiusFactor; 0: unlimited), and
+// RadianceEstimateParams' cone_filter, flatten (disc_flatten) and fixed_radius. A fixed radius
+// left automatic is the typical radius of k photons; its callers check that there is one.
+inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_light, const RenderSettings& settings) {
     PhotonGatherPass pass;
     pass.maps = maps;
+    const std::uint32_t k = settings.k;
     pass.global_params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
-    if (max_radius < 0.0f)
-        max_radius = maps.typical_radius > 0.0f
-                         ? kAutoRadiusFactor * maps.typical_radius * sqrtf(static_cast<float>(pass.global_params.k) / 32.0f)
-                         : 0.0f;
+    pass.global_params.cone_filter = settings.cone_filter;
+    pass.global_params.flatten = settings.disc_flatten > 0.0f ? settings.disc_flatten : 0.0f;
+    pass.global_params.fixed_radius = settings.fixed_radius;
+    const float k_scale = sqrtf(static_cast<float>(pass.global_params.k) / 32.0f);
+    float max_radius = settings.max_radius;
+    if (max_radius < 0.0f && settings.fixed_radius) max_radius = maps.typical_radius * k_scale;
+    else if (max_radius < 0.0f)
+        max_radius = maps.typical_radius > 0.0f ? kAutoRadiusFactor * maps.typical_radius * k_scale : 0.0f;
     pass.global_params.max_radius = max_radius;
     pass.caustic_params = pass.global_params;
     if (direct_light) {

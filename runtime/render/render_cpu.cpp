@@ -1,7 +1,7 @@
 // The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
 #include "runtime/render/cpu_device.h"
 #include "runtime/render/frame_backend.h"
-#include "runtime/render/light_distribution.h"
+#include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
 
@@ -9,19 +9,17 @@ namespace {
 
 class CpuFrameBackend final : public FrameBackend {
 public:
-    explicit CpuFrameBackend(const SceneViews& scene) : scene_(scene), light_cdf_(light_power_cdf(scene.geometry)) {}
+    explicit CpuFrameBackend(const SceneViews& scene) : scene_(scene), lights_(light_power_table(scene.geometry)) {}
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
-        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings.k,
-                                                          plan.settings.max_radius);
-        const LightDistributionView lights{light_cdf_.data(), static_cast<std::uint32_t>(light_cdf_.size())};
-        run_frame(device, scene_.geometry, lights, gather, plan, linear, aovs, times);
+        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
+        run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
     }
 
 private:
     SceneViews scene_;
-    std::vector<float> light_cdf_;
+    LightPowerTable lights_;
 };
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include "runtime/backend/cuda_parallel_for.cuh"
 #include "runtime/backend/device_buffer.h"
 #include "runtime/render/frame_backend.h"
-#include "runtime/render/light_distribution.h"
+#include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
 
@@ -51,7 +51,7 @@ const T* upload(std::vector<DeviceBuffer>& owned, const T* host, std::uint64_t c
 
 class CudaFrameBackend final : public FrameBackend {
 public:
-    explicit CudaFrameBackend(const SceneViews& scene) : scene_(scene) {
+    explicit CudaFrameBackend(const SceneViews& scene) {
         StopWatch watch;
         cuda_check(cudaSetDevice(0), "cudaSetDevice");
         const GeometryView& h = scene.geometry;
@@ -63,16 +63,15 @@ public:
         device_geometry_.materials = upload(owned_, h.materials, h.material_count);
         device_geometry_.lights = upload(owned_, h.lights, h.light_count);
         device_photons_ = upload_photon_maps(owned_, scene.photons);
-        const std::vector<float> cdf = light_power_cdf(h);
-        device_lights_ = LightDistributionView{upload(owned_, cdf.data(), cdf.size()),
-                                               static_cast<std::uint32_t>(cdf.size())};
+        const LightPowerTable lights = light_power_table(h);
+        device_lights_ = lights.selection();
+        device_lights_.cdf = upload(owned_, lights.cdf.data(), lights.cdf.size());
         upload_ms_ = watch.lap_ms();
     }
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CudaDevice device;
-        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings.k,
-                                                          plan.settings.max_radius);
+        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings);
         run_frame(device, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
     double upload_ms() const override { return upload_ms_; }
@@ -96,11 +95,10 @@ private:
         return d;
     }
 
-    SceneViews scene_;
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;
-    LightDistributionView device_lights_;
+    LightSelection device_lights_;
     double upload_ms_ = 0.0;
 };
 

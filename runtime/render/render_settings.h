@@ -26,6 +26,9 @@ struct RenderSettings {
     RenderMode mode = RenderMode::photons;
     std::uint32_t k = 0;                  // photons per estimate; 0: the scene's default (else 100)
     float max_radius = -1.0f;             // photon search limit; < 0: automatic, 0: unlimited
+    bool cone_filter = false;             // weight photons by a cone filter (sharper caustics)
+    float disc_flatten = 0.0f;            // flatten the photon search toward the surface (0: a sphere)
+    bool fixed_radius = false;            // every photon within the search limit instead of the k nearest
     std::uint32_t light_samples = 16;     // shadow rays per diffuse point (lights picked by power)
     std::uint32_t max_depth = 8;          // mirror/glass bounces followed
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)

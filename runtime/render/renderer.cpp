@@ -6,6 +6,7 @@
 #include <string>
 
 #include "runtime/render/frame_backend.h"
+#include "runtime/shading/ray_offset.h"
 
 namespace kdpm {
 
@@ -23,13 +24,6 @@ const char* render_mode_name(RenderMode mode) {
         case RenderMode::direct: return "direct";
     }
     return "?";
-}
-
-float scene_epsilon(const GeometryInfo& info) {
-    float extent = 1.0f;
-    for (int a = 0; a < 3; ++a)
-        extent = std::max({extent, std::fabs(info.bounds_min[a]), std::fabs(info.bounds_max[a])});
-    return 2e-5f * extent;
 }
 
 Renderer::Renderer(const SceneViews& scene, BackendKind backend) : scene_(scene), backend_(backend) {
@@ -69,13 +63,17 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
         throw std::runtime_error("camera field of view must be in (0, 180) degrees");
     plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, settings.spp);
-    plan.epsilon = scene_epsilon(scene_.geometry.info);
+    plan.epsilon = render_ray_offset(scene_.geometry.info);
     plan.direct_light = settings.mode != RenderMode::photons;
     plan.gather_photons = settings.mode != RenderMode::direct;
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");
     if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
+    if (plan.gather_photons && settings.fixed_radius &&
+        !(settings.max_radius > 0.0f || (settings.max_radius < 0.0f && scene_.photons.typical_radius > 0.0f)))
+        throw std::runtime_error(
+            "a fixed-radius gather needs a radius: the photon map records none, give one (--max-radius R > 0)");
 
     RenderResult result;
     impl_->run(plan, result.linear, result.aovs, result.times);

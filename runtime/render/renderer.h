@@ -32,7 +32,4 @@ private:
     std::unique_ptr<FrameBackend> impl_;
 };
 
-// Largest absolute coordinate of the scene bounds, for ray offsets that scale with the scene.
-float scene_epsilon(const GeometryInfo& info);
-
 }  // namespace kdpm

@@ -22,7 +22,7 @@ LoadedScene LoadedScene::load(const std::filesystem::path& geometry,
                               const std::optional<std::filesystem::path>& photons) {
     StopWatch watch;
     LoadedScene scene;
-    scene.files_->geometry.emplace(GeometryFile::open(geometry, /*verify_checksums=*/true));
+    scene.files_->geometry.emplace(GeometryFile::open(geometry));
     scene.views_.geometry = scene.files_->geometry->view();
     scene.views_.camera = scene.files_->geometry->camera();
     if (photons) {

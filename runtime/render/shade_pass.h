@@ -9,14 +9,15 @@
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/light_sampling.h"
 #include "runtime/render/tile_order.h"
+#include "runtime/shading/direct_light.h"
+#include "runtime/shading/ray_offset.h"
 
 namespace kdpm {
 
 struct ShadePass {
     GeometryView geometry;
-    LightDistributionView lights;
+    LightSelection lights;
     FrameBuffersView frame;
     std::uint32_t sample = 0;
     std::uint32_t light_samples = 16;
@@ -34,7 +35,7 @@ struct ShadePass {
             glm::vec3 l(0.0f);
             if (direct) {
                 // Offset along the geometric normal, cosine with the shading normal.
-                const glm::vec3 origin = d.position + epsilon * d.geometric_normal;
+                const glm::vec3 origin = offset_origin(d.position, d.geometric_normal, epsilon, true);
                 l += direct_light(geometry, lights, origin, d.shading_normal, d.albedo, light_samples,
                                   static_cast<std::uint32_t>(pixel), sample * kMaxDiffuseVertices + v);
             }

@@ -12,44 +12,14 @@
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_traversal.h"
-#include "runtime/geometry/surface_normal.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/specular.h"
 #include "runtime/render/tile_order.h"
+#include "runtime/shading/ray_offset.h"
+#include "runtime/shading/specular.h"
+#include "runtime/shading/surface_point.h"
 
 namespace kdpm {
-
-// A surface interaction in the form every pass uses.
-struct SurfacePoint {
-    glm::vec3 position;
-    glm::vec3 shading_normal;    // facing the incoming ray
-    glm::vec3 geometric_normal;  // facing the incoming ray
-    bool front;                  // the ray hit the side cross(e1, e2) points to
-};
-
-KDPM_HD KDPM_INLINE SurfacePoint surface_at(const GeometryView& g, const Ray& ray, const Hit& hit) {
-    const TriangleRecord& tri = g.triangles[hit.triangle];
-    const glm::vec3 ng = geometric_normal(tri);
-    glm::vec3 ns = shading_normal(g, hit.triangle, hit.u, hit.v);
-    SurfacePoint s;
-    s.front = glm::dot(ng, ray.direction) < 0.0f;
-    s.geometric_normal = s.front ? ng : -ng;
-    if (glm::dot(ns, s.geometric_normal) < 0.0f) ns = -ns;
-    s.shading_normal = ns;
-    s.position = ray.origin + hit.t * ray.direction;
-    return s;
-}
-
-KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& g, std::uint32_t triangle) {
-    const std::uint32_t m = g.triangles[triangle].material;
-    if (m < g.material_count) return g.materials[m];
-    MaterialRecord grey{};  // a file without materials renders as mid grey
-    grey.diffuse[0] = grey.diffuse[1] = grey.diffuse[2] = 0.5f;
-    return grey;
-}
-
-KDPM_HD KDPM_INLINE glm::vec3 rgb(const float (&a)[3]) { return glm::vec3(a[0], a[1], a[2]); }
 
 struct TracePass {
     GeometryView geometry;
@@ -63,6 +33,8 @@ struct TracePass {
         glm::vec3 origin, direction, throughput;
         std::uint32_t depth;
     };
+    // Mirrors and glass push at most two rays per hit; beyond kStack pending rays (deep chains
+    // of glass) the further branches are dropped like rays past max_depth.
     static constexpr int kStack = 8;
 
     KDPM_HD void operator()(std::uint64_t item) const {
@@ -88,15 +60,15 @@ struct TracePass {
             if (!hit.found()) continue;
             const SurfacePoint s = surface_at(geometry, ray, hit);
             const MaterialRecord m = material_of(geometry, hit.triangle);
-            if (s.front) emitted += r.throughput * rgb(m.emission);
+            if (s.front) emitted += r.throughput * to_vec3(m.emission);
 
-            const glm::vec3 above = s.position + epsilon * s.geometric_normal;
-            const glm::vec3 below = s.position - epsilon * s.geometric_normal;
+            const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);
+            const glm::vec3 below = offset_origin(s.position, s.geometric_normal, epsilon, false);
             const bool deeper = r.depth + 1 < max_depth;
             if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
                 if (deeper && sp < kStack)
                     stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal),
-                                          r.throughput * rgb(m.specular), r.depth + 1};
+                                          r.throughput * to_vec3(m.specular), r.depth + 1};
             } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
                 const float ior = m.ior > 0.0f ? m.ior : 1.5f;
                 glm::vec3 refracted(0.0f);
@@ -105,11 +77,11 @@ struct TracePass {
                     stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal), r.throughput * f,
                                           r.depth + 1};
                 if (deeper && sp < kStack && f < 1.0f)
-                    stack[sp++] = Pending{below, refracted, r.throughput * (1.0f - f) * rgb(m.transmission),
+                    stack[sp++] = Pending{below, refracted, r.throughput * (1.0f - f) * to_vec3(m.transmission),
                                           r.depth + 1};
             } else if (count < kMaxDiffuseVertices) {
                 frame.vertices[pixel * kMaxDiffuseVertices + count] =
-                    DiffuseVertex{s.position, s.shading_normal, s.geometric_normal, rgb(m.diffuse), r.throughput};
+                    DiffuseVertex{s.position, s.shading_normal, s.geometric_normal, to_vec3(m.diffuse), r.throughput};
                 ++count;
             }
         }

@@ -4,6 +4,7 @@
 
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/shading/constants.h"
 
 namespace kdpm {
 
@@ -20,7 +21,7 @@ std::vector<float> photon_density(const PhotonMapView& map, const std::vector<fl
             KnnHeap heap;
             const std::uint32_t found = knn_search(map, p, k, 0.0f, heap);
             if (found == 0 || !(heap.d2[0] > 0.0f)) return;
-            density[i] = static_cast<float>(found) / (3.14159265f * heap.d2[0]);
+            density[i] = static_cast<float>(found) / (kPi * heap.d2[0]);
         },
         16);
     return density;

@@ -47,7 +47,7 @@ inline void check_triangles(std::vector<TriangleRecord> tris, const std::vector<
     ValidationOptions exhaustive;
     exhaustive.exhaustive = true;
     REQUIRE_NOTHROW(validate_file(reader, exhaustive));
-    const GeometryFile file = GeometryFile::from_bytes(bytes, "test.kdg", true);
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "test.kdg");
     CHECK(count_mismatches(file.view(), rays) == 0);
 }
 

@@ -35,7 +35,7 @@ void check_refused(const fs::path& p) {
     const auto r = test::run_tool("kdpm-validate " + p.string());
     CHECK(r.exit_code == 1);
     CHECK(one_line(r.output));
-    CHECK_THROWS_AS(GeometryFile::open(p, true), FormatError);
+    CHECK_THROWS_AS(GeometryFile::open(p), FormatError);
 }
 
 }  // namespace
@@ -56,7 +56,7 @@ TEST_CASE("kdpm-build-geometry builds the shipped card and kdpm-validate accepts
     CHECK(read_bytes(out) == read_bytes(dir / "q.kdg"));
     const auto v = test::run_tool("kdpm-validate --exhaustive " + out.string());
     CHECK(v.exit_code == 0);
-    const GeometryFile f = GeometryFile::open(out, true);
+    const GeometryFile f = GeometryFile::open(out);
     CHECK(f.info().triangle_count == 32);
     CHECK(f.lights().size() == 2);
     CHECK(f.metadata().tool == "kdpm-build-geometry");

@@ -18,7 +18,7 @@ TEST_CASE("closest hits through the tree match brute force on random soups", "[g
 TEST_CASE("closest hits match brute force on the shipped Cornell box", "[geometry][traversal]") {
     const Scene scene = load_scene_input(test::source_path("scenes/cornell-box/cornell-box.json"));
     const auto bytes = test::build_bytes(scene);
-    const GeometryFile file = GeometryFile::from_bytes(bytes, "cornell-box.kdg", true);
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "cornell-box.kdg");
     // Rays from inside the room and from the camera side, in random directions.
     auto rays = test::random_rays(60000, 7, -0.99f, 1.99f);
     auto outside = test::random_rays(40000, 8, -3.0f, 4.0f);

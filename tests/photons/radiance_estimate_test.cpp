@@ -3,7 +3,7 @@
 #include <random>
 
 #include "runtime/photons/radiance_estimate.h"
-#include "builders/photons/built_tree_view.h"
+#include "tests/support/built_tree_view.h"
 
 using namespace kdpm;
 

@@ -5,7 +5,7 @@
 
 #include "runtime/photons/radius_search.h"
 #include "tests/photons/synthetic_photons.h"
-#include "builders/photons/built_tree_view.h"
+#include "tests/support/built_tree_view.h"
 
 using namespace kdpm;
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <optional>
 
-#include "builders/photons/built_tree_view.h"
+#include "tests/support/built_tree_view.h"
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "runtime/geometry/geometry_file.h"

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "runtime/render/renderer.h"
-#include "runtime/render/specular.h"
+#include "runtime/shading/specular.h"
 #include "tests/runtime/hand_built_scene.h"
 
 using namespace kdpm;

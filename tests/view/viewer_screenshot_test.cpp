@@ -175,7 +175,7 @@ TEST_CASE("kdpm-view --panel shows the control panel over the image, and only th
         return sum / (3.0 * (x1 - x0) * (y1 - y0));
     };
     CHECK(box_difference(12, 12, 200, 120) > 0.05);
-    CHECK(box_difference(330, 250, 480, 360) < 0.004);
+    CHECK(box_difference(370, 200, 480, 360) < 0.004);
 }
 
 TEST_CASE("kdpm-view refuses bad input with a one-line error", "[view][e2e]") {

@@ -1,6 +1,8 @@
 // kdpm-bench-photons [SCENE ...]: photon shooting speed, then k-nearest-photon queries per second
 // at the camera's primary hit points for k = 2, 4, ..., 256 on the VVH tree, the balanced tree
-// and nanoflann over the same photons, side by side. SCENE: a .kdg file or a scene card (.json);
+// and nanoflann over the same photons, side by side. The trees are queried as the renderer
+// queries them: written as .kdp files and memory-mapped by PhotonMapFile. nanoflann is optional
+// (compiled in when its headers are installed). SCENE: a .kdg file or a scene card (.json);
 // default: the project's Cornell box, Sponza and Conference cards (those whose mesh is present).
 #include <algorithm>
 #include <chrono>
@@ -11,20 +13,27 @@
 #include <optional>
 #include <ctime>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "builders/photons/built_tree_view.h"
+#include <unistd.h>
+
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/geometry/scene_card.h"
 #include "builders/photons/photon_tree_builder.h"
+#include "builders/photons/photon_tree_writer.h"
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/photons/photon_map_file.h"
 #include "runtime/photons/photon_shooter.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
-#include "tools/photons/nanoflann_reference.h"
 #include "tools/photons/primary_hits.h"
+#if defined(KDPM_HAVE_NANOFLANN)
+#include "tools/bench/peer_nanoflann.h"
+#endif
 
 using namespace kdpm;
 namespace fs = std::filesystem;
@@ -44,6 +53,24 @@ std::optional<GeometryFile> load_geometry(const fs::path& input) {
     auto build = build_geometry_file(load_scene_input(input), KdBuildParams{});
     auto bytes = build.writer.bytes();
     return GeometryFile::from_bytes(bytes, input.filename().string());
+}
+
+// The tree as the renderer gets it: written to a .kdp file and mapped (the mapping outlives the
+// file, which is removed at once).
+PhotonMapFile as_mapped_file(const BuiltPhotonTree& tree, const std::string& name) {
+    ContainerWriter writer(FileKind::photon_tree);
+    add_photon_tree_sections(writer, PhotonMapKind::global, tree);
+    writer.set_metadata(Metadata{});
+    const fs::path path = fs::temp_directory_path() / ("kdpm-bench-photons-" + std::to_string(::getpid()) + "-" + name + ".kdp");
+    writer.write(path);
+    try {
+        PhotonMapFile file = PhotonMapFile::open(path);
+        fs::remove(path);
+        return file;
+    } catch (...) {
+        fs::remove(path);
+        throw;
+    }
 }
 
 // Queries per second of body(i) over n queries: with one thread, on this thread and timed by its
@@ -88,21 +115,21 @@ void bench_scene(const fs::path& input, const BenchOptions& o) {
     vvh_options.leaf_size = balanced_options.leaf_size = static_cast<std::uint32_t>(o.leaf_size);
     balanced_options.builder = PhotonTreeBuilder::balanced;
     t0 = Clock::now();
-    BuiltPhotonTree vvh = build_photon_tree(shot.hits, vvh_options);
+    BuiltPhotonTree vvh = build_photon_tree(shot.hits, vvh_options, shot.info.emitted_count, shot.info.max_bounces);
     double vvh_s = seconds_since(t0);
     t0 = Clock::now();
-    BuiltPhotonTree balanced = build_photon_tree(shot.hits, balanced_options);
+    BuiltPhotonTree balanced = build_photon_tree(shot.hits, balanced_options, shot.info.emitted_count, shot.info.max_bounces);
     double balanced_s = seconds_since(t0);
-    photon_tools::PointCloud cloud;
-    for (const auto& h : shot.hits) {
-        cloud.x.push_back(h.position[0]);
-        cloud.y.push_back(h.position[1]);
-        cloud.z.push_back(h.position[2]);
+    double flann_s = 0.0;
+#if defined(KDPM_HAVE_NANOFLANN)
+    std::optional<bench::NanoflannPeer> flann;
+    if (o.nanoflann) {
+        flann.emplace(vvh.x, vvh.y, vvh.z);  // the photon positions, in any order
+        flann_s = flann->build_ms() * 1e-3;
     }
-    t0 = Clock::now();
-    std::optional<photon_tools::NanoflannTree> flann;
-    if (o.nanoflann) flann.emplace(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(10));
-    double flann_s = seconds_since(t0);
+#else
+    const bool flann = false;
+#endif
     std::printf("  trees: VVH %u nodes, depth %u, r %.4g, %.3f s | balanced %u nodes, depth %u, %.3f s | "
                 "nanoflann (leaf 10) %.3f s\n",
                 vvh.info.node_count, vvh.info.max_depth, vvh.info.query_radius, vvh_s, balanced.info.node_count,
@@ -114,7 +141,10 @@ void bench_scene(const fs::path& input, const BenchOptions& o) {
     std::printf("  %5s %14s %14s %14s %12s %12s %9s\n", "k", "VVH q/s", "balanced q/s", "nanoflann q/s",
                 "VVH/bal time", "VVH/nf time", "agree");
 
-    const PhotonMapView vvh_view = view_of(vvh), balanced_view = view_of(balanced);
+    const PhotonMapFile vvh_file = as_mapped_file(vvh, "vvh"), balanced_file = as_mapped_file(balanced, "balanced");
+    const PhotonMapView vvh_view = vvh_file.view(), balanced_view = balanced_file.view();
+    std::vector<float> queries;
+    for (const SurfacePoint& p : points) queries.insert(queries.end(), {p.position.x, p.position.y, p.position.z});
     std::vector<float> kth_vvh(points.size()), kth_bal(points.size()), kth_nf(points.size());
     for (int k = o.k_min; k <= o.k_max; k *= 2) {
         const auto uk = static_cast<std::uint32_t>(k);
@@ -125,20 +155,17 @@ void bench_scene(const fs::path& input, const BenchOptions& o) {
                 kth[i] = n ? heap.d2[0] : 0.0f;
             };
         };
-        auto flann_query = [&](std::uint64_t i) {
-            std::uint32_t index[kMaxGatherK];
-            float d2[kMaxGatherK];
-            const float q[3] = {points[i].position.x, points[i].position.y, points[i].position.z};
-            std::size_t n = flann->knnSearch(q, uk, index, d2);
-            float m = 0.0f;
-            for (std::size_t j = 0; j < n; ++j) m = std::max(m, d2[j]);
-            kth_nf[i] = m;
-        };
         double q_vvh = 0.0, q_bal = 0.0, q_nf = 0.0;
         for (int rep = 0; rep < o.repeat; ++rep) {
             q_vvh = std::max(q_vvh, queries_per_second(points.size(), tree_query(vvh_view, kth_vvh), o.single_thread));
             q_bal = std::max(q_bal, queries_per_second(points.size(), tree_query(balanced_view, kth_bal), o.single_thread));
-            if (flann) q_nf = std::max(q_nf, queries_per_second(points.size(), flann_query, o.single_thread));
+#if defined(KDPM_HAVE_NANOFLANN)
+            if (flann) {
+                const auto start = Clock::now();
+                flann->knn(queries, k, kth_nf);
+                q_nf = std::max(q_nf, points.size() / seconds_since(start));
+            }
+#endif
         }
         std::size_t agree = 0;
         for (std::size_t i = 0; i < points.size(); ++i)

@@ -4,16 +4,10 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
 #include "runtime/geometry/geometry_file.h"
+#include "runtime/shading/surface_point.h"
 
 namespace kdpm::photon_tools {
-
-struct SurfacePoint {
-    glm::vec3 position;
-    glm::vec3 normal;  // geometric, facing the camera
-};
 
 // Pixels whose ray hits nothing are left out; order is row-major over the hits.
 std::vector<SurfacePoint> primary_hits(const GeometryFile& geometry, std::uint32_t width, std::uint32_t height);

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "runtime/backend/backend_kind.h"
@@ -40,7 +41,7 @@ int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
     int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, threads = 0;
-    double exposure = 0.0, max_radius = -1.0;
+    double exposure = 0.0, max_radius = -1.0, disc = 0.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
     CameraOverride camera;
@@ -56,6 +57,21 @@ int run(int argc, char** argv) {
         .option("k", &k, "N", "photons per radiance estimate, at most 256 (default: the scene card's)", 1, 256)
         .option("max-radius", &max_radius, "R",
                 "photon search limit (default: automatic, 4x the photon map's typical k-radius; 0: none)", 0.0, 1e30)
+        .option("filter", "box|cone", "photon weights in the estimate: box (default: all equal) or cone (nearer count more)",
+                [&](const std::string& v) {
+                    if (v != "box" && v != "cone") throw std::invalid_argument("expected box or cone, got '" + v + "'");
+                    settings.cone_filter = v == "cone";
+                })
+        .option("gather", "knn|radius",
+                "photons per estimate: the k nearest (default), or every photon within --max-radius (default: the "
+                "typical radius of k photons)",
+                [&](const std::string& v) {
+                    if (v != "knn" && v != "radius") throw std::invalid_argument("expected knn or radius, got '" + v + "'");
+                    settings.fixed_radius = v == "radius";
+                })
+        .option("disc", &disc, "F",
+                "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
+                "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
         .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
         .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
@@ -97,6 +113,7 @@ int run(int argc, char** argv) {
     settings.spp = static_cast<std::uint32_t>(spp);
     settings.k = static_cast<std::uint32_t>(k);
     settings.max_radius = static_cast<float>(max_radius);
+    settings.disc_flatten = static_cast<float>(disc);
     settings.light_samples = static_cast<std::uint32_t>(light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.post.exposure_stops = static_cast<float>(exposure);

@@ -1,5 +1,5 @@
 #pragma once
-// The kernels' view of a photon tree still in memory (tests, benchmarks), as PhotonMapFile
+// The kernels' view of a photon tree still in memory (tests), as PhotonMapFile
 // gives for a mapped .kdp.
 #include "builders/photons/photon_tree_builder.h"
 #include "runtime/photons/photon_map_view.h"

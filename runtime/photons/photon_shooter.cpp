@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "formats/photon_hits_summary.h"
 #include "runtime/backend/cpu_parallel_for.h"
@@ -55,6 +56,11 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
                           const std::function<void(double)>& progress) {
     if (options.photons > 0xffffffffull) throw std::invalid_argument("at most 4294967295 photons");
     if (options.max_bounces > 255) throw std::invalid_argument("at most 255 bounces");
+    const std::uint64_t first = options.path_begin;
+    const std::uint64_t last = options.path_end == 0 ? options.photons : options.path_end;
+    if (!(first < last && last <= options.photons))
+        throw std::invalid_argument("path range " + std::to_string(first) + ":" + std::to_string(last) +
+                                    " is not within 0:" + std::to_string(options.photons));
     LightDistribution lights = LightDistribution::of(g);
     if (!(lights.total_power > 0.0f)) throw std::invalid_argument("the scene has no light that emits");
     const LightTable table = lights.table(g);
@@ -69,8 +75,8 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
     const std::uint32_t slots = options.max_bounces + 1;
     std::vector<PhotonHit> batch_hits;
     std::vector<PhotonPathResult> batch_results;
-    for (std::uint64_t begin = 0; begin < options.photons; begin += kBatch) {
-        const std::uint64_t n = std::min(kBatch, options.photons - begin);
+    for (std::uint64_t begin = first; begin < last; begin += kBatch) {
+        const std::uint64_t n = std::min(kBatch, last - begin);
         batch_hits.resize(n * slots);
         batch_results.assign(n, PhotonPathResult{});
         cpu_parallel_for(
@@ -84,7 +90,7 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
             const PhotonHit* first = batch_hits.data() + i * slots;
             shot.hits.insert(shot.hits.end(), first, first + batch_results[i].stored);
         }
-        if (progress) progress(static_cast<double>(begin + n) / static_cast<double>(options.photons));
+        if (progress) progress(static_cast<double>(begin + n - first) / static_cast<double>(last - first));
     }
 
     auto& info = shot.info;

@@ -48,3 +48,14 @@ TEST_CASE("a short name is only an alias of its long option", "[cli]") {
     parse(args, {"tool", "-o", "b.kdg"});
     CHECK(output == "b.kdg");
 }
+
+TEST_CASE("a repeated positional collects every remaining argument in order", "[cli]") {
+    std::string output;
+    std::vector<std::string> inputs;
+    cli::Args args("tool", "test");
+    args.positionals("PART", &inputs, "parts").option("output", &output, "FILE", "out").short_name('o', "output");
+    parse(args, {"tool", "b.kdph", "-o", "x.kdph", "a.kdph", "--", "-c.kdph"});
+    CHECK(inputs == std::vector<std::string>{"b.kdph", "a.kdph", "-c.kdph"});
+    CHECK(output == "x.kdph");
+    CHECK_THAT(args.usage(), Catch::Contains("PART..."));
+}

@@ -63,6 +63,11 @@ Args& Args::positional(const std::string& meta, std::string* target, const std::
     return *this;
 }
 
+Args& Args::positionals(const std::string& meta, std::vector<std::string>* target, const std::string& help) {
+    positionals_.push_back({meta + "...", help, nullptr, true, target});
+    return *this;
+}
+
 Args& Args::short_name(char letter, const std::string& long_name) {
     short_names_.push_back({std::string("-") + letter, long_name});
     return *this;
@@ -133,10 +138,15 @@ void Args::parse(int argc, char** argv) {
         }
         if (a.size() > 1 && a[0] == '-' && !only_positionals && a != "-") fail("unknown option " + a);
         if (next_positional >= positionals_.size()) fail("unexpected argument '" + a + "'");
+        if (auto* many = positionals_[next_positional].many) {
+            many->push_back(a);
+            continue;
+        }
         *positionals_[next_positional++].target = a;
     }
     for (std::size_t i = next_positional; i < positionals_.size(); ++i)
-        if (positionals_[i].required) fail("missing " + positionals_[i].meta);
+        if (positionals_[i].required && !(positionals_[i].many && !positionals_[i].many->empty()))
+            fail("missing " + positionals_[i].meta);
 }
 
 }  // namespace kdpm::cli

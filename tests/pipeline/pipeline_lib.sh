@@ -13,14 +13,15 @@ make_library() {
   done
 }
 
-# write_config FILE OUT [extra scene YAML lines]
+# write_config FILE OUT [extra scene YAML lines]; the library's scenes are $NAMES (default a b).
+NAMES="a b"
 write_config() {
   local file=$1 out=$2
   {
     echo "bin: $BIN"
     echo "out: $out"
     echo "scenes:"
-    for name in a b; do
+    for name in $NAMES; do
       echo "  $name: {input: $WORK/scenes/$name/cornell-box.json, photons: $PHOTONS, shards: $SHARDS, bounces: $BOUNCES, seed: $SEED}"
     done
     shift 2

@@ -36,7 +36,8 @@ struct LightDistribution {
 };
 
 // Throws std::invalid_argument when the scene has no light with power, for more than
-// 2^32 - 1 photons, or for a path range outside 0 <= begin < end <= photons. `progress` receives the fraction done.
+// 2^32 - 1 photons, or for a path range outside 0 <= begin < end <= photons. `progress`
+// receives the fraction done.
 ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
                           const std::function<void(double)>& progress = {});
 

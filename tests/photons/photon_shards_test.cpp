@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -8,6 +9,8 @@
 
 #include "builders/photons/photon_shards.h"
 #include "formats/format_error.h"
+#include "runtime/photons/photon_shooter.h"
+#include "tests/photons/shooting_scenes.h"
 #include "tests/support/file_contents.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -155,6 +158,40 @@ TEST_CASE("kdpm-shoot-photons --paths needs BEGIN < END <= N", "[photons][shards
     INFO(last.output);
     CHECK(last.exit_code == 0);
     CHECK_THAT(last.output, Catch::Contains("paths 99:100 of 100 emitted"));
+}
+
+TEST_CASE("shoot_photons over path ranges gives the whole run's hits, shard by shard", "[photons][shards]") {
+    GeometryFile scene = test::closed_box(0.7f, true);
+    ShootOptions whole_options;
+    whole_options.photons = 3000;
+    whole_options.max_bounces = 6;
+    whole_options.seed = 11;
+    const ShotPhotons whole = shoot_photons(scene.view(), whole_options);
+    REQUIRE(whole.info.caustic_count > 0);
+
+    std::vector<PhotonHit> joined;
+    std::uint64_t rays = 0;
+    // Cuts off the batch grid, with a one-path shard.
+    for (auto [begin, end] : {std::pair<std::uint64_t, std::uint64_t>{0, 1234}, {1234, 1235}, {1235, 3000}}) {
+        ShootOptions part = whole_options;
+        part.path_begin = begin;
+        part.path_end = end;
+        const ShotPhotons shot = shoot_photons(scene.view(), part);
+        CHECK(shot.info.emitted_count == 3000);
+        for (const auto& h : shot.hits) CHECK((h.path >= begin && h.path < end));
+        joined.insert(joined.end(), shot.hits.begin(), shot.hits.end());
+        rays += shot.rays;
+    }
+    REQUIRE(joined.size() == whole.hits.size());
+    CHECK(std::memcmp(joined.data(), whole.hits.data(), joined.size() * sizeof(PhotonHit)) == 0);
+    CHECK(rays == whole.rays);
+
+    for (auto [begin, end] : {std::pair<std::uint64_t, std::uint64_t>{5, 5}, {6, 5}, {0, 3001}, {3000, 3001}}) {
+        ShootOptions bad = whole_options;
+        bad.path_begin = begin;
+        bad.path_end = end;
+        CHECK_THROWS_AS(shoot_photons(scene.view(), bad), std::invalid_argument);
+    }
 }
 
 TEST_CASE("A .kdph's path range: its metadata, else every path", "[photons][shards]") {

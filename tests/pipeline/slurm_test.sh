@@ -65,7 +65,8 @@ MEMORY=$(( $(awk '/MemTotal/ {print $2}' /proc/meminfo) / 1024 / 2 ))
 export SLURM_CONF=$WORK/slurm.conf
 cat > "$SLURM_CONF" <<CONF
 ClusterName=kdpmtest
-SlurmctldHost=$(hostname -s)(127.0.0.1)
+SlurmctldHost=localhost(127.0.0.1)
+CommunicationParameters=NoInAddrAny,NoCtldInAddrAny
 SlurmctldPort=$CTLD_PORT
 SlurmdPort=$SLURMD_PORT
 AuthType=auth/munge
@@ -105,6 +106,14 @@ wait_for 20 scontrol ping || skip "slurmctld does not start ($(tail -n 1 "$WORK/
 daemon slurmd -D -N localhost > "$WORK/logs/slurmd.out" 2>&1
 node_idle() { [ "$(sinfo -h -n localhost -o %T 2>/dev/null)" = idle ]; }
 wait_for 30 node_idle || skip "slurmd does not join ($(tail -n 1 "$WORK/logs/slurmd.log" 2>/dev/null))"
+# The daemons listen on the loopback address only (NoInAddrAny, NoCtldInAddrAny).
+if command -v ss >/dev/null; then
+  listening=$(ss -Hltn "( sport = :$CTLD_PORT or sport = :$SLURMD_PORT )" 2>/dev/null | awk '{print $4}' || true)
+  if [ -n "$listening" ] && grep -qv "^127\.0\.0\.1:" <<< "$listening"; then
+    echo "FAIL: a Slurm daemon listens beyond the loopback: $listening"
+    exit 1
+  fi
+fi
 echo "single-node Slurm cluster up (slurmctld :$CTLD_PORT, slurmd :$SLURMD_PORT, $CPUS CPUs)"
 
 make_library

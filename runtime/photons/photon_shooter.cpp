@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "formats/photon_hits_summary.h"
 #include "runtime/backend/cpu_parallel_for.h"
@@ -19,6 +20,11 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
                           const std::function<void(double)>& progress) {
     if (options.photons > 0xffffffffull) throw std::invalid_argument("at most 4294967295 photons");
     if (options.max_bounces > 255) throw std::invalid_argument("at most 255 bounces");
+    const std::uint64_t first_path = options.path_begin;
+    const std::uint64_t end_path = options.path_end == 0 ? options.photons : options.path_end;
+    if (!(first_path < end_path && end_path <= options.photons))
+        throw std::invalid_argument("path range " + std::to_string(first_path) + ":" + std::to_string(end_path) +
+                                    " is not within 0:" + std::to_string(options.photons));
     const LightPowerTable lights = light_power_table(g);
     if (!(lights.total_power > 0.0f)) throw std::invalid_argument("the scene has no light that emits");
     const LightSelection table = lights.selection();
@@ -33,8 +39,8 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
     const std::uint32_t slots = options.max_bounces + 1;
     std::vector<PhotonHit> batch_hits;
     std::vector<PhotonPathResult> batch_results;
-    for (std::uint64_t begin = 0; begin < options.photons; begin += kBatch) {
-        const std::uint64_t n = std::min(kBatch, options.photons - begin);
+    for (std::uint64_t begin = first_path; begin < end_path; begin += kBatch) {
+        const std::uint64_t n = std::min(kBatch, end_path - begin);
         batch_hits.resize(n * slots);
         batch_results.assign(n, PhotonPathResult{});
         cpu_parallel_for(
@@ -48,7 +54,7 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
             const PhotonHit* first = batch_hits.data() + i * slots;
             shot.hits.insert(shot.hits.end(), first, first + batch_results[i].stored);
         }
-        if (progress) progress(static_cast<double>(begin + n) / static_cast<double>(options.photons));
+        if (progress) progress(static_cast<double>(begin + n - first_path) / static_cast<double>(end_path - first_path));
     }
 
     auto& info = shot.info;

@@ -109,3 +109,14 @@ TEST_CASE("an option given twice takes its last value, so scripts can append ove
     REQUIRE(eye);
     CHECK(*eye == std::array<double, 3>{-2.0, -3.0, -4.0});
 }
+
+TEST_CASE("a repeated positional collects every remaining argument in order", "[cli]") {
+    std::string output;
+    std::vector<std::string> inputs;
+    cli::Args args("tool", "test");
+    args.positionals("PART", &inputs, "parts").option("output", &output, "FILE", "out").short_name('o', "output");
+    parse(args, {"tool", "b.kdph", "-o", "x.kdph", "a.kdph", "--", "-c.kdph"});
+    CHECK(inputs == std::vector<std::string>{"b.kdph", "a.kdph", "-c.kdph"});
+    CHECK(output == "x.kdph");
+    CHECK_THAT(args.usage(), Catch::Contains("PART..."));
+}

@@ -88,6 +88,11 @@ Args& Args::positional(const std::string& meta, std::string* target, const std::
     return *this;
 }
 
+Args& Args::positionals(const std::string& meta, std::vector<std::string>* target, const std::string& help) {
+    positionals_.push_back({meta + "...", help, nullptr, true, target});
+    return *this;
+}
+
 Args& Args::short_name(char letter, const std::string& long_name) {
     short_names_.push_back({letter, long_name});
     return *this;
@@ -108,6 +113,17 @@ void Args::describe(CLI::App& app) const {
     app.set_config("--config", "", "read options from FILE (TOML or INI: name = value, same names as the options)")
         ->type_name("FILE");
     for (const auto& p : positionals_) {
+        if (p.many) {
+            const CLI::callback_t collect = [many = p.many](const CLI::results_t& r) {
+                many->insert(many->end(), r.begin(), r.end());
+                return true;
+            };
+            app.add_option(positional_name(p.meta), collect, p.help)
+                ->type_name("")
+                ->expected(-1)  // one or more, also after options
+                ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+            continue;
+        }
         const CLI::callback_t store = [target = p.target](const CLI::results_t& r) {
             *target = r.back();
             return true;

@@ -29,6 +29,8 @@ public:
                  double min = -std::numeric_limits<double>::infinity(),
                  double max = std::numeric_limits<double>::infinity());
     Args& positional(const std::string& meta, std::string* target, const std::string& help, bool required = true);
+    // The remaining arguments, one or more (last positional only).
+    Args& positionals(const std::string& meta, std::vector<std::string>* target, const std::string& help);
     // Options whose value needs more than a range check (e.g. an enum); `parse` throws
     // std::invalid_argument with the reason.
     Args& option(const std::string& name, const std::string& meta, const std::string& help,
@@ -56,6 +58,7 @@ private:
         std::string meta, help;
         std::string* target;
         bool required;
+        std::vector<std::string>* many = nullptr;
     };
     [[noreturn]] void fail(const std::string& why) const;
     void describe(CLI::App& app) const;

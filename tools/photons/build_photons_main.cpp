@@ -6,8 +6,10 @@
 #include <stdexcept>
 
 #include "builders/photons/photon_hits_file.h"
+#include "builders/photons/photon_shards.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "builders/photons/photon_map_writer.h"
+#include "formats/container_reader.h"
 #include "formats/container_writer.h"
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"
@@ -36,6 +38,15 @@ int main(int argc, char** argv) {
         ThreadLimit limit(threads);
         auto start = std::chrono::steady_clock::now();
         PhotonHitSet set = read_photon_hits(input);
+        // A shard's photons carry the power of 1/N each but are only some of the N paths: its map
+        // would be too dark.
+        if (auto reader = ContainerReader::open(input, FileKind::photon_hits); reader.has_metadata()) {
+            const PathRange paths = photon_hits_path_range(reader.metadata(), set.info);
+            if (paths != PathRange{0, set.info.emitted_count})
+                throw std::invalid_argument(input + " is a shard (paths " + path_range_text(paths) + " of " +
+                                            std::to_string(set.info.emitted_count) +
+                                            "): merge the shards with kdpm-merge-photons first");
+        }
 
         PhotonTreeOptions options;
         options.builder = balanced ? PhotonTreeBuilder::balanced : PhotonTreeBuilder::vvh;

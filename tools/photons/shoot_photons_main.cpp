@@ -1,11 +1,14 @@
 // kdpm-shoot-photons SCENE.kdg -n COUNT --bounces B -o PHOTONS.kdph: traces photon paths from the
 // scene's area lights and stores every diffuse hit (with its bounce index and caustic flag).
+// --paths BEGIN:END traces only those paths of the COUNT, a shard for kdpm-merge-photons.
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
 #include "builders/photons/photon_hits_file.h"
+#include "builders/photons/photon_shards.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
@@ -16,7 +19,7 @@
 using namespace kdpm;
 
 int main(int argc, char** argv) {
-    std::string input, output;
+    std::string input, output, paths;
     bool quiet = false;
     int photons = 0, bounces = -1, threads = 0, seed = 0;
     cli::Args args("kdpm-shoot-photons", "Shoots photons from the area lights of a .kdg scene into a photon hit file (.kdph).");
@@ -24,6 +27,11 @@ int main(int argc, char** argv) {
         .option("output", &output, "FILE.kdph", "output file")
         .option("photons", &photons, "N", "photon paths to emit (default: the scene card's)", 1, 1 << 30)
         .option("bounces", &bounces, "B", "most bounces per path (default: the scene card's, else 4)", 0, 255)
+        .option("paths", "BEGIN:END", "shoot only paths BEGIN..END-1 of the N (a shard; default all)",
+                [&](const std::string& v) {
+                    parse_path_range(v, UINT64_MAX);  // the syntax here; END <= N once N is known
+                    paths = v;
+                })
         .option("seed", &seed, "S", "random seed (default 0)", 0, 1 << 30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");
@@ -40,6 +48,9 @@ int main(int argc, char** argv) {
         options.max_bounces = bounces >= 0 ? static_cast<std::uint32_t>(bounces)
                                            : (info.default_bounces > 0 && info.default_bounces <= 255 ? info.default_bounces : 4u);
         options.seed = static_cast<std::uint32_t>(seed);
+        const PathRange range = paths.empty() ? PathRange{0, options.photons} : parse_path_range(paths, options.photons);
+        options.path_begin = range.begin;
+        options.path_end = range.end;
 
         auto start = std::chrono::steady_clock::now();
         ShotPhotons shot = [&] {
@@ -59,6 +70,7 @@ int main(int argc, char** argv) {
         meta.parameters["photons"] = std::to_string(options.photons);
         meta.parameters["bounces"] = std::to_string(options.max_bounces);
         meta.parameters["seed"] = std::to_string(options.seed);
+        meta.parameters[kPathsParameter] = path_range_text(range);
         meta.parameters["store_direct"] = "true";
         meta.statistics["stored"] = set.info.stored_count;
         meta.statistics["caustic"] = set.info.caustic_count;
@@ -68,9 +80,10 @@ int main(int argc, char** argv) {
         if (!quiet) {
             std::uint32_t direct = 0;
             for (const auto& h : set.hits) direct += photon_bounce(h.flags) == 0;
-            std::printf("kdpm-shoot-photons: %llu emitted, %u stored (global map %u, caustic map %u; %u direct hits), "
+            const std::string shard = paths.empty() ? "" : "paths " + path_range_text(range) + " of ";
+            std::printf("kdpm-shoot-photons: %s%llu emitted, %u stored (global map %u, caustic map %u; %u direct hits), "
                         "%llu rays, %.2f s (%.2f M rays/s) -> %s\n",
-                        static_cast<unsigned long long>(options.photons), set.info.stored_count,
+                        shard.c_str(), static_cast<unsigned long long>(options.photons), set.info.stored_count,
                         set.info.stored_count, set.info.caustic_count, direct,
                         static_cast<unsigned long long>(shot.rays), secs, shot.rays / secs * 1e-6, output.c_str());
         }

@@ -83,6 +83,21 @@ void check_output_not_input(const fs::path& output, std::span<const fs::path> in
     }
 }
 
+void check_output_destination(const fs::path& output, std::span<const fs::path> inputs) {
+    const fs::path target = resolve_output_path(output);
+    struct stat st{};
+    if (::stat(target.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw FormatError("cannot write '" + output.string() +
+                          "': it exists and is not a regular file (kdpm replaces only regular files)");
+    const fs::path folder = folder_of(target);
+    if (::stat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode))
+        throw FormatError("cannot write '" + output.string() + "': folder '" + folder.string() + "' does not exist");
+    if (::access(folder.c_str(), W_OK) != 0)
+        throw FormatError("cannot write '" + output.string() + "': folder '" + folder.string() + "': " +
+                          std::strerror(errno));
+    check_output_not_input(output, inputs);
+}
+
 bool is_output_temporary_name(const std::string& name) {
     const std::size_t at = name.rfind(kTempMarker);
     if (name.empty() || name[0] != '.' || at == std::string::npos) return false;

@@ -22,6 +22,11 @@ std::filesystem::path resolve_output_path(const std::filesystem::path& requested
 // device and inode), before any work is done.
 void check_output_not_input(const std::filesystem::path& output, std::span<const std::filesystem::path> inputs);
 
+// Everything about an output that can be checked before the work that produces it: a target
+// that exists but is not a regular file, a missing folder, an output that is an input.
+// Throws FormatError with one line.
+void check_output_destination(const std::filesystem::path& output, std::span<const std::filesystem::path> inputs);
+
 // True for names of this writer's temporaries (".NAME.kdpm-tmp-PID-XXXXXX").
 bool is_output_temporary_name(const std::string& filename);
 

@@ -3,6 +3,7 @@
 #include <rapidjson/document.h>
 #include <rapidjson/error/en.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -10,7 +11,9 @@
 #include <string>
 
 #include "builders/geometry/scene_import.h"
+#include "formats/camera_check.h"
 #include "formats/format_error.h"
+#include "formats/scene_limits.h"
 
 namespace kdpm {
 
@@ -30,6 +33,9 @@ struct Card {
         for (unsigned i = 0; i < 3; ++i) {
             if (!v[i].IsNumber()) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
             out[i] = static_cast<float>(v[i].GetDouble());
+            if (!std::isfinite(out[i]))
+                fail(std::string("\"") + key + "\" has a value that does not fit a float: " +
+                     std::to_string(v[i].GetDouble()));
         }
     }
     std::uint32_t count(const Value& v, const char* key, std::uint32_t lo, std::uint32_t hi) const {
@@ -51,14 +57,25 @@ Card read_card(const fs::path& path) {
     std::ostringstream text;
     text << in.rdbuf();
     Card card{path.string(), {}};
+    std::string json = text.str();
+    if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) json.erase(0, 3);  // a UTF-8 byte order mark, as some editors write
     // Iterative parsing: a hostile card cannot exhaust the stack.
-    card.doc.Parse<rapidjson::kParseIterativeFlag>(text.str().c_str());
+    card.doc.Parse<rapidjson::kParseIterativeFlag>(json.c_str());
     if (card.doc.HasParseError())
         card.fail(std::string("not valid JSON: ") + rapidjson::GetParseError_En(card.doc.GetParseError()) +
                   " at byte " + std::to_string(card.doc.GetErrorOffset()));
     if (!card.doc.IsObject()) card.fail("a scene card must be a JSON object");
     card.only_keys(card.doc, "the card", {"mesh", "shared_scene", "up", "camera", "lights", "photons", "bounces", "k", "comment"});
     return card;
+}
+
+// A camera framed from the bounds fails only for a scene too large for float arithmetic.
+void check_framed_camera(const Scene& scene, const std::string& name) {
+    try {
+        check_camera(scene.camera, name + " (framed from the scene bounds)");
+    } catch (const std::runtime_error& e) {
+        throw FormatError(e.what());
+    }
 }
 
 }  // namespace
@@ -87,7 +104,9 @@ fs::path card_mesh_path(const fs::path& card_path) {
 Scene load_scene_input(const fs::path& input) {
     if (!is_scene_card(input)) {
         Scene scene = import_mesh(input);
+        check_scene_extent(scene);
         frame_camera(scene);
+        check_framed_camera(scene, input.string());
         return scene;
     }
     const fs::path mesh = card_mesh_path(input);
@@ -103,10 +122,12 @@ Scene load_scene_input(const fs::path& input) {
         else card.fail("\"up\" must be \"x\", \"y\" or \"z\"");
     }
     Scene scene = import_mesh(mesh);
+    check_scene_extent(scene);
     scene.up_axis = up;
-    if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, 1u << 30);
-    if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, 1000);
-    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, 4096);
+    // The limits of the options these defaults stand in for (kdpm-shoot-photons, kdpm-render).
+    if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, kMaxPhotons);
+    if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, kMaxBounces);
+    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, kMaxGatherK);
     if (doc.HasMember("lights")) {
         const Value& lights = doc["lights"];
         if (!lights.IsArray()) card.fail("\"lights\" must be an array");
@@ -120,7 +141,12 @@ Scene load_scene_input(const fs::path& input) {
             card.vec3(l["e1"], "e1", e1);
             card.vec3(l["e2"], "e2", e2);
             card.vec3(l["radiance"], "radiance", radiance);
-            scene.lights.push_back(make_parallelogram_light(p0, e1, e2, radiance));
+            const AreaLightRecord light = make_parallelogram_light(p0, e1, e2, radiance);
+            if (!std::isfinite(light.area) || !std::isfinite(light.power))
+                card.fail("light " + std::to_string(scene.lights.size()) + ": its area or power overflows a float");
+            if (radiance[0] < 0.0f || radiance[1] < 0.0f || radiance[2] < 0.0f)
+                card.fail("light " + std::to_string(scene.lights.size()) + ": \"radiance\" must not be negative");
+            scene.lights.push_back(light);
         }
     }
     if (doc.HasMember("camera")) {
@@ -136,11 +162,17 @@ Scene load_scene_input(const fs::path& input) {
         if (!c["vfov"].IsNumber() || !(c["vfov"].GetDouble() > 0.0 && c["vfov"].GetDouble() < 180.0))
             card.fail("\"vfov\" must be a number of degrees in (0, 180)");
         cam.vfov_degrees = static_cast<float>(c["vfov"].GetDouble());
-        cam.width = c.HasMember("width") ? card.count(c["width"], "width", 1, 65536) : 512;
-        cam.height = c.HasMember("height") ? card.count(c["height"], "height", 1, 65536) : 512;
+        cam.width = c.HasMember("width") ? card.count(c["width"], "width", 1, kMaxImageSide) : 512;
+        cam.height = c.HasMember("height") ? card.count(c["height"], "height", 1, kMaxImageSide) : 512;
+        try {
+            check_camera(cam, card.name);
+        } catch (const std::runtime_error& e) {
+            throw FormatError(e.what());
+        }
         scene.has_camera = true;
     } else {
         frame_camera(scene);
+        check_framed_camera(scene, card.name);
     }
     return scene;
 }

@@ -26,8 +26,7 @@ constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
 struct sigaction g_previous[NSIG];
 
 extern "C" void remove_temporaries_and_reraise(int sig) {
-    for (Slot& s : g_slots)
-        if (s.state.load(std::memory_order_acquire) == kReady) ::unlink(s.path);
+    remove_registered_temporaries();
     ::sigaction(sig, &g_previous[sig], nullptr);
     ::raise(sig);  // delivered to the previous disposition once this handler returns
 }
@@ -51,6 +50,11 @@ void install_handlers() {
 }
 
 }  // namespace
+
+void remove_registered_temporaries() {
+    for (Slot& s : g_slots)
+        if (s.state.load(std::memory_order_acquire) == kReady) ::unlink(s.path);
+}
 
 int register_temporary(const char* path) {
     if (std::strlen(path) >= PATH_MAX) return -1;

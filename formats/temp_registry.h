@@ -9,4 +9,7 @@ namespace kdpm {
 int register_temporary(const char* path);
 void unregister_temporary(int slot);
 
+// Unlinks every registered temporary; async-signal-safe, for handlers of fatal signals.
+void remove_registered_temporaries();
+
 }  // namespace kdpm

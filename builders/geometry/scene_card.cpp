@@ -52,6 +52,11 @@ struct Card {
 };
 
 Card read_card(const fs::path& path) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw FormatError(path.string() + ": no such scene card");
+    // Checked before opening: a FIFO would block the open, a device would never end.
+    if (!fs::is_regular_file(status)) throw FormatError(path.string() + ": the scene card is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FormatError(path.string() + ": cannot open scene card");
     std::ostringstream text;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "builders/photons/photon_hits_file.h"
+#include "formats/output_file.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "builders/photons/photon_map_writer.h"
 #include "formats/container_writer.h"
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
     args.parse(argc, argv);
     return cli::run_tool("kdpm-build-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdp)");
+        const std::filesystem::path inputs[] = {input};
+        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
         auto start = std::chrono::steady_clock::now();
         PhotonHitSet set = read_photon_hits(input);

@@ -49,8 +49,8 @@ void check_info(const ContainerReader& file, const GeometryInfo& info, const Tre
         fail(file, "default photons " + std::to_string(info.default_photons) + " exceed " + std::to_string(kMaxPhotons));
     if (info.default_bounces > kMaxBounces)
         fail(file, "default bounces " + std::to_string(info.default_bounces) + " exceed " + std::to_string(kMaxBounces));
-    if (info.default_k > kMaxGatherK)
-        fail(file, "default k " + std::to_string(info.default_k) + " exceeds " + std::to_string(kMaxGatherK));
+    if (info.default_k > kMaxEstimateK)
+        fail(file, "default k " + std::to_string(info.default_k) + " exceeds " + std::to_string(kMaxEstimateK));
     for (int a = 0; a < 3; ++a) {
         if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
             info.bounds_min[a] > info.bounds_max[a])

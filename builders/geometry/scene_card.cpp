@@ -132,7 +132,7 @@ Scene load_scene_input(const fs::path& input) {
     // The limits of the options these defaults stand in for (kdpm-shoot-photons, kdpm-render).
     if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, kMaxPhotons);
     if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, kMaxBounces);
-    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, kMaxGatherK);
+    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, kMaxEstimateK);
     if (doc.HasMember("lights")) {
         const Value& lights = doc["lights"];
         if (!lights.IsArray()) card.fail("\"lights\" must be an array");

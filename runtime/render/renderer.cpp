@@ -6,6 +6,7 @@
 #include <string>
 
 #include "runtime/render/frame_backend.h"
+#include "runtime/render/frame_memory.h"
 
 namespace kdpm {
 
@@ -75,6 +76,9 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");
+    check_frame_memory(plan.width, plan.height,
+                       frame_memory_bytes(plan.width, plan.height, plan.gather_photons, settings.aovs),
+                       available_memory_bytes());
     if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
 
     RenderResult result;

@@ -14,6 +14,7 @@
 #include "formats/container_reader.h"
 #include "formats/container_writer.h"
 #include "formats/geometry_layout.h"
+#include "formats/photon_layout.h"
 #include "formats/section_ids.h"
 #include "tests/hostile/fork_child.h"
 #include "tests/hostile/hostile_files.h"
@@ -147,4 +148,24 @@ TEST_CASE("--threads 0 means all cores in every tool", "[hostile][inputs]") {
               .exit_code == 0);
     CHECK(test::run_tool("kdpm-shoot-photons " + q(kdg) + " -n 100 --threads 0 -o " + q(dir / "o.kdph") + " --quiet")
               .exit_code == 0);
+}
+
+TEST_CASE("a photon search radius too small to find any photon is refused", "[hostile][inputs]") {
+    test::TempDir dir;
+    const fs::path kdg = build_scene(dir, /*light_faces_down=*/true);
+    REQUIRE(test::run_tool("kdpm-shoot-photons " + q(kdg) + " -n 2000 -o " + q(dir / "s.kdph") + " --quiet").exit_code == 0);
+    const auto tiny = test::run_tool("kdpm-build-photons " + q(dir / "s.kdph") + " --radius 1e-30 -o " + q(dir / "s.kdp") + " --quiet");
+    CHECK(test::is_clean_error(tiny));
+    CHECK_THAT(tiny.output, Catch::Contains("1e-30 is below"));
+    REQUIRE(test::run_tool("kdpm-build-photons " + q(dir / "s.kdph") + " -o " + q(dir / "s.kdp") + " --quiet").exit_code == 0);
+    const auto render = test::run_tool("kdpm-render " + q(kdg) + " " + q(dir / "s.kdp") + " --max-radius 1e-30 -o " +
+                                       q(dir / "o.png") + " --quiet");
+    CHECK(test::is_clean_error(render));
+    // A file that stores such a radius (the renderer derives its search radius from it).
+    test::reseal_record<PhotonTreeInfo>(dir / "s.kdp", dir / "tiny.kdp",
+                                        photon_tree_section(PhotonMapKind::global, ptree_field_info),
+                                        [](PhotonTreeInfo& i) { i.query_radius = 1e-30f; });
+    CHECK(test::run_tool("kdpm-validate " + q(dir / "tiny.kdp")).exit_code != 0);
+    CHECK(test::is_clean_error(test::run_tool("kdpm-render " + q(kdg) + " " + q(dir / "tiny.kdp") + " -o " +
+                                              q(dir / "o.png") + " --quiet")));
 }

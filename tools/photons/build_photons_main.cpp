@@ -7,6 +7,7 @@
 
 #include "builders/photons/photon_hits_file.h"
 #include "formats/output_file.h"
+#include "formats/scene_limits.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "builders/photons/photon_map_writer.h"
 #include "formats/container_writer.h"
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
         ThreadLimit limit(threads);
         auto start = std::chrono::steady_clock::now();
         PhotonHitSet set = read_photon_hits(input);
+        if (radius_too_small(radius, set.info.bounds_min, set.info.bounds_max))
+            throw std::invalid_argument("--radius " + radius_limit_text(radius, set.info.bounds_min, set.info.bounds_max) +
+                                        ": no photon would be found (0 picks it)");
 
         PhotonTreeOptions options;
         options.builder = balanced ? PhotonTreeBuilder::balanced : PhotonTreeBuilder::vvh;

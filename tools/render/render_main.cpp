@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "formats/output_file.h"
+#include "formats/scene_limits.h"
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/render/image_output.h"
@@ -86,6 +87,10 @@ int run(int argc, char** argv) {
     std::optional<std::filesystem::path> photons;
     if (!photon_path.empty()) photons = photon_path;
     LoadedScene scene = LoadedScene::load(geometry_path, photons);
+    const GeometryInfo& bounds = scene.views().geometry.info;
+    if (radius_too_small(max_radius, bounds.bounds_min, bounds.bounds_max))
+        throw std::invalid_argument("--max-radius " + radius_limit_text(max_radius, bounds.bounds_min, bounds.bounds_max) +
+                                    ": no photon would be found (0: no limit)");
     Renderer renderer(scene.views(), selected.kind);
 
     settings.width = static_cast<std::uint32_t>(width);

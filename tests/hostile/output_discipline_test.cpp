@@ -18,6 +18,7 @@
 #include "formats/output_file.h"
 #include "tests/hostile/fork_child.h"
 #include "tests/support/file_contents.h"
+#include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
@@ -125,6 +126,9 @@ TEST_CASE("the temporary of a killed writer is recognisable and removed by the n
     REQUIRE(left.size() == 1);
     CHECK(is_output_temporary_name(left[0]));
     CHECK_FALSE(is_output_temporary_name("out.kdph"));
+    const auto validated = test::run_tool("kdpm-validate '" + (dir / left[0]).string() + "'");
+    CHECK(validated.exit_code == 1);
+    CHECK_THAT(validated.output, Catch::Contains("interrupted kdpm write"));
     // Age it past the grace period that protects writers in other PID namespaces.
     const struct utimbuf old{::time(nullptr) - 3600, ::time(nullptr) - 3600};
     REQUIRE(::utime((dir / left[0]).c_str(), &old) == 0);

@@ -7,7 +7,10 @@
 #include <limits>
 #include <string>
 
+#include <rapidjson/document.h>
+
 #include "formats/geometry_layout.h"
+#include "formats/metadata.h"
 #include "formats/section_ids.h"
 #include "tests/hostile/hostile_files.h"
 #include "tests/hostile/resealed_file.h"
@@ -141,4 +144,30 @@ TEST_CASE("garbage metadata gets a reason, not a parser assertion", "[hostile][n
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.output, Catch::Contains("no \"kdpm\" object"));
     CHECK_THAT(r.output, !Catch::Contains("assertion"));
+}
+
+TEST_CASE("thousands of copies of one triangle build a bounded tree with a warning", "[hostile][numbers]") {
+    test::TempDir dir;
+    std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 3000; ++i) obj += "f 1 2 3\n";
+    test::write_file(dir / "copies.obj", obj);
+    const auto r = test::run_tool("kdpm-build-geometry '" + (dir / "copies.obj").string() + "' -o '" +
+                                  (dir / "out.kdg").string() + "'");
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.output, Catch::Contains("warning: a leaf holds 3000 triangles"));
+    CHECK(validate(dir / "out.kdg").exit_code == 0);
+}
+
+TEST_CASE("metadata with a NaN statistic is still valid JSON (kdpm-inspect --json)", "[hostile][numbers]") {
+    Metadata m;
+    m.tool = "kdpm-build-geometry";
+    m.statistics["sah_cost"] = std::numeric_limits<double>::quiet_NaN();
+    m.statistics["nodes"] = 3;
+    const std::string json = metadata_to_json(m);
+    rapidjson::Document doc;
+    doc.Parse(json.c_str());
+    CHECK_FALSE(doc.HasParseError());
+    const Metadata back = metadata_from_json(json);
+    CHECK(back.statistics.count("nodes") == 1);
+    CHECK(back.statistics.count("sah_cost") == 0);
 }

@@ -56,6 +56,11 @@ int main(int argc, char** argv) {
         }();
         const auto built = std::chrono::steady_clock::now();
         build.writer.write(output);
+        if (!quiet && build.stats.max_leaf_triangles > kLargeLeafTriangles)
+            std::fprintf(stderr,
+                         "kdpm-build-geometry: warning: a leaf holds %u triangles (duplicate or overlapping triangles "
+                         "that no split separates); rays through it will be slow\n",
+                         build.stats.max_leaf_triangles);
         if (!quiet) {
             const KdTreeStats& s = build.stats;
             auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };

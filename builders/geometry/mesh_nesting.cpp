@@ -132,6 +132,15 @@ std::string read_all(const std::filesystem::path& p) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+bool is_json_mesh(const std::string& ext) { return ext == ".gltf" || ext == ".glb"; }
+
+// Formats Assimp reads with its recursive XML parser.
+bool is_xml_mesh(const std::string& ext) {
+    for (const char* e : {".dae", ".xml", ".x3d", ".xgl", ".zgl", ".amf", ".irr", ".irrmesh", ".ogex", ".mesh"})
+        if (ext == e) return true;
+    return false;
+}
+
 // The JSON chunk of a binary glTF: 12-byte header, then chunk length, chunk type "JSON".
 std::string_view glb_json(std::string_view bytes) {
     if (bytes.size() < 20 || bytes.compare(0, 4, "glTF") != 0 || bytes.compare(16, 4, "JSON") != 0) return {};
@@ -142,26 +151,28 @@ std::string_view glb_json(std::string_view bytes) {
 
 }  // namespace
 
-void check_mesh_nesting(const std::filesystem::path& path) {
-    const std::string ext = lower_extension(path);
-    const bool json = ext == ".gltf" || ext == ".glb";
-    const bool xml = ext == ".dae" || ext == ".xml" || ext == ".x3d" || ext == ".xgl" || ext == ".zgl" ||
-                     ext == ".amf" || ext == ".irr" || ext == ".irrmesh" || ext == ".ogex" || ext == ".mesh";
-    if (!json && !xml) return;
-    const std::string bytes = read_all(path);
+void check_mesh_nesting(std::string_view bytes, const std::string& extension, const std::string& name) {
+    std::string ext = extension;
+    if (!ext.empty() && ext[0] != '.') ext.insert(ext.begin(), '.');
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const bool json = is_json_mesh(ext), xml = is_xml_mesh(ext);
     auto refuse = [&](const char* what, std::size_t depth) {
-        if (depth == std::numeric_limits<std::size_t>::max())
-            throw FormatError(path.string() + ": " + what + " has a cycle");
-        throw FormatError(path.string() + ": " + what + " is nested " + std::to_string(depth) + " levels deep (at most " +
+        if (depth == std::numeric_limits<std::size_t>::max()) throw FormatError(name + ": " + what + " has a cycle");
+        throw FormatError(name + ": " + what + " is nested " + std::to_string(depth) + " levels deep (at most " +
                           std::to_string(kMaxMeshNesting) + " are accepted)");
     };
     if (json) {
-        const std::string_view text = ext == ".glb" ? glb_json(bytes) : std::string_view(bytes);
+        const std::string_view text = ext == ".glb" ? glb_json(bytes) : bytes;
         if (const std::size_t d = json_nesting_depth(text); d > kMaxMeshNesting) refuse("JSON", d);
         if (const std::size_t d = gltf_node_depth(text); d > kMaxMeshNesting) refuse("the node hierarchy", d);
-    } else if (const std::size_t d = xml_nesting_depth(bytes); d > kMaxMeshNesting) {
-        refuse("XML", d);
+    } else if (xml) {
+        if (const std::size_t d = xml_nesting_depth(bytes); d > kMaxMeshNesting) refuse("XML", d);
     }
+}
+
+void check_mesh_nesting(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    if (is_json_mesh(ext) || is_xml_mesh(ext)) check_mesh_nesting(read_all(path), ext, path.string());
 }
 
 }  // namespace kdpm

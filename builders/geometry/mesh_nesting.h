@@ -4,6 +4,7 @@
 // megabytes of "[[[[..." or of a 20,000-node chain would overflow any stack.
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace kdpm {
@@ -21,5 +22,7 @@ std::size_t gltf_node_depth(std::string_view json);
 
 // Throws FormatError when a .gltf/.glb/.dae/.xml/... file nests deeper than kMaxMeshNesting.
 void check_mesh_nesting(const std::filesystem::path& path);
+// The same for bytes in memory; `extension` without or with its dot, `name` for messages.
+void check_mesh_nesting(std::string_view bytes, const std::string& extension, const std::string& name);
 
 }  // namespace kdpm

@@ -51,6 +51,8 @@ struct Card {
     }
 };
 
+Card parse_card(std::string json, const std::string& name);
+
 Card read_card(const fs::path& path) {
     std::error_code ec;
     const auto status = fs::status(path, ec);
@@ -61,8 +63,11 @@ Card read_card(const fs::path& path) {
     if (!in) throw FormatError(path.string() + ": cannot open scene card");
     std::ostringstream text;
     text << in.rdbuf();
-    Card card{path.string(), {}};
-    std::string json = text.str();
+    return parse_card(text.str(), path.string());
+}
+
+Card parse_card(std::string json, const std::string& name) {
+    Card card{name, {}};
     if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) json.erase(0, 3);  // a UTF-8 byte order mark, as some editors write
     // Iterative parsing: a hostile card cannot exhaust the stack.
     card.doc.Parse<rapidjson::kParseIterativeFlag>(json.c_str());
@@ -83,39 +88,8 @@ void check_framed_camera(const Scene& scene, const std::string& name) {
     }
 }
 
-}  // namespace
-
-bool is_scene_card(const fs::path& input) {
-    std::string ext = input.extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".json";
-}
-
-fs::path card_mesh_path(const fs::path& card_path) {
-    const Card card = read_card(card_path);
-    const Value& doc = card.doc;
-    if (!doc.HasMember("mesh") || !doc["mesh"].IsString()) card.fail("\"mesh\" (a path relative to the card) is required");
-    if (doc.HasMember("shared_scene")) {
-        if (!doc["shared_scene"].IsString()) card.fail("\"shared_scene\" must be a string");
-        if (const char* env = std::getenv("KDPM_SCENES"); env && *env) {
-            fs::path p = fs::path(env) / doc["shared_scene"].GetString();
-            std::error_code ec;
-            if (fs::is_regular_file(p, ec)) return p;
-        }
-    }
-    return card_path.parent_path() / doc["mesh"].GetString();
-}
-
-Scene load_scene_input(const fs::path& input) {
-    if (!is_scene_card(input)) {
-        Scene scene = import_mesh(input);
-        check_scene_extent(scene);
-        frame_camera(scene);
-        check_framed_camera(scene, input.string());
-        return scene;
-    }
-    const fs::path mesh = card_mesh_path(input);
-    const Card card = read_card(input);
+// Everything a card sets beyond its mesh: up axis, defaults, lights, camera.
+void apply_card(const Card& card, Scene& scene) {
     const Value& doc = card.doc;
     std::uint32_t up = 1;
     if (doc.HasMember("up")) {
@@ -126,8 +100,6 @@ Scene load_scene_input(const fs::path& input) {
         else if (s == "z" || s == "+z") up = 2;
         else card.fail("\"up\" must be \"x\", \"y\" or \"z\"");
     }
-    Scene scene = import_mesh(mesh);
-    check_scene_extent(scene);
     scene.up_axis = up;
     // The limits of the options these defaults stand in for (kdpm-shoot-photons, kdpm-render).
     if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, kMaxPhotons);
@@ -179,6 +151,48 @@ Scene load_scene_input(const fs::path& input) {
         frame_camera(scene);
         check_framed_camera(scene, card.name);
     }
+}
+
+}  // namespace
+
+void apply_scene_card(const std::string& json, const std::string& name, Scene& scene) {
+    apply_card(parse_card(json, name), scene);
+}
+
+bool is_scene_card(const fs::path& input) {
+    std::string ext = input.extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".json";
+}
+
+fs::path card_mesh_path(const fs::path& card_path) {
+    const Card card = read_card(card_path);
+    const Value& doc = card.doc;
+    if (!doc.HasMember("mesh") || !doc["mesh"].IsString()) card.fail("\"mesh\" (a path relative to the card) is required");
+    if (doc.HasMember("shared_scene")) {
+        if (!doc["shared_scene"].IsString()) card.fail("\"shared_scene\" must be a string");
+        if (const char* env = std::getenv("KDPM_SCENES"); env && *env) {
+            fs::path p = fs::path(env) / doc["shared_scene"].GetString();
+            std::error_code ec;
+            if (fs::is_regular_file(p, ec)) return p;
+        }
+    }
+    return card_path.parent_path() / doc["mesh"].GetString();
+}
+
+Scene load_scene_input(const fs::path& input) {
+    if (!is_scene_card(input)) {
+        Scene scene = import_mesh(input);
+        check_scene_extent(scene);
+        frame_camera(scene);
+        check_framed_camera(scene, input.string());
+        return scene;
+    }
+    const fs::path mesh = card_mesh_path(input);
+    const Card card = read_card(input);
+    Scene scene = import_mesh(mesh);
+    check_scene_extent(scene);
+    apply_card(card, scene);
     return scene;
 }
 

@@ -145,6 +145,34 @@ void check_mesh_file(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace {
+
+// The scene of an Assimp import (null when it failed): materials, triangles in source order,
+// emissive triangles as lights. `name` prefixes every message.
+Scene convert_scene(const Assimp::Importer& importer, const aiScene* ai, const std::string& name) {
+    if (!ai || !ai->mRootNode || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+        std::string why = importer.GetErrorString();
+        std::replace(why.begin(), why.end(), '\n', ' ');
+        throw FormatError(name + ": cannot read mesh" + (why.empty() ? "" : ": " + why));
+    }
+    Scene scene;
+    try {
+        for (unsigned i = 0; i < ai->mNumMaterials; ++i) scene.materials.push_back(convert_material(*ai->mMaterials[i]));
+        if (scene.materials.empty()) scene.materials.push_back(MaterialRecord{{0.8f, 0.8f, 0.8f}, 0, {}, 1.0f, {}, 0, {}, 0});
+        Walker{*ai, scene}.walk(*ai->mRootNode);
+    } catch (const FormatError& e) {
+        throw FormatError(name + ": " + e.what());
+    }
+    if (scene.triangles.empty()) throw FormatError(name + ": the mesh has no triangles");
+    const bool any_normals = std::any_of(scene.triangles.begin(), scene.triangles.end(),
+                                         [](const TriangleRecord& t) { return t.flags & kTriangleHasNormals; });
+    if (!any_normals) scene.normals.clear();
+    add_emissive_triangle_lights(scene);
+    return scene;
+}
+
+}  // namespace
+
 Scene import_mesh(const std::filesystem::path& path) {
     check_mesh_file(path);
     Assimp::Importer importer;
@@ -152,30 +180,22 @@ Scene import_mesh(const std::filesystem::path& path) {
     // On a large stack: Assimp's importers recurse once per nesting level of the file.
     const aiScene* ai = nullptr;
     run_with_large_stack([&] { ai = importer.ReadFile(path.string(), aiProcess_Triangulate); });
-    if (!ai || !ai->mRootNode || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
-        std::string why = importer.GetErrorString();
-        std::replace(why.begin(), why.end(), '\n', ' ');
-        throw FormatError(path.string() + ": cannot read mesh" + (why.empty() ? "" : ": " + why));
-    }
-    Scene scene;
-    try {
-        for (unsigned i = 0; i < ai->mNumMaterials; ++i) scene.materials.push_back(convert_material(*ai->mMaterials[i]));
-    } catch (const FormatError& e) {
-        throw FormatError(path.string() + ": " + e.what());
-    }
-    if (scene.materials.empty()) scene.materials.push_back(MaterialRecord{{0.8f, 0.8f, 0.8f}, 0, {}, 1.0f, {}, 0, {}, 0});
-    try {
-        Walker{*ai, scene}.walk(*ai->mRootNode);
-    } catch (const FormatError& e) {
-        throw FormatError(path.string() + ": " + e.what());
-    }
-    if (scene.triangles.empty()) throw FormatError(path.string() + ": the mesh has no triangles");
-    const bool any_normals = std::any_of(scene.triangles.begin(), scene.triangles.end(),
-                                         [](const TriangleRecord& t) { return t.flags & kTriangleHasNormals; });
-    if (!any_normals) scene.normals.clear();
-    add_emissive_triangle_lights(scene);
+    Scene scene = convert_scene(importer, ai, path.string());
     scene.source_name = path.filename().string();
     scene.source_hash = hash_file(path.string());
+    return scene;
+}
+
+Scene import_mesh_from_memory(std::string_view bytes, const std::string& extension, const std::string& name) {
+    if (bytes.empty()) throw FormatError(name + ": the mesh file is empty");
+    check_mesh_nesting(bytes, extension, name);
+    Assimp::Importer importer;
+    const aiScene* ai = nullptr;
+    run_with_large_stack([&] {
+        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate, extension.c_str());
+    });
+    Scene scene = convert_scene(importer, ai, name);
+    scene.source_name = name;
     return scene;
 }
 

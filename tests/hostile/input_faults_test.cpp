@@ -7,8 +7,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "formats/container_reader.h"
@@ -65,7 +68,7 @@ TEST_CASE("an empty photon map is written and read back", "[hostile][inputs]") {
 TEST_CASE("empty sections at a shared offset are not an overlap", "[hostile][inputs]") {
     ContainerWriter w(FileKind::photon_tree);
     const std::vector<std::uint32_t> one{7};
-    for (std::uint32_t id = 0x400; id < 0x420; ++id)  // enough sections for an unstable sort
+    for (std::uint32_t id = 0x400; id < 0x411; ++id)  // 17 sections: std::sort is no longer an insertion sort
         w.add_raw(id, ElementType::u32, 4, id % 2 ? 1 : 0, one.data());
     const auto bytes = w.bytes();
     CHECK_NOTHROW(ContainerReader::from_bytes(bytes, "empty-sections.kdp"));
@@ -94,18 +97,32 @@ TEST_CASE("a mapped input truncated while in use is a one-line error, not SIGBUS
 
 TEST_CASE("a FIFO as input is refused at once instead of blocking", "[hostile][inputs]") {
     test::TempDir dir;
-    REQUIRE(::mkfifo((dir / "in.kdg").c_str(), 0600) == 0);
-    REQUIRE(::mkfifo((dir / "card.json").c_str(), 0600) == 0);
-    // A hang would stall the test: `timeout` turns it into a failure.
+    const fs::path fifos[] = {dir / "in.kdg", dir / "card.json"};
+    for (const fs::path& f : fifos) REQUIRE(::mkfifo(f.c_str(), 0600) == 0);
+    // A tool that blocks in open() is released after a grace period by opening the write end,
+    // so a regression fails this test instead of hanging it.
+    std::atomic<bool> done{false};
+    std::thread releaser([&] {
+        std::this_thread::sleep_for(std::chrono::seconds(3));
+        while (!done) {
+            for (const fs::path& f : fifos)
+                if (const int fd = ::open(f.c_str(), O_WRONLY | O_NONBLOCK); fd >= 0) ::close(fd);
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+    });
     for (const std::string& cmd : {"kdpm-validate " + q(dir / "in.kdg"), "kdpm-inspect " + q(dir / "in.kdg"),
                                    "kdpm-render " + q(dir / "in.kdg") + " --mode direct --quiet -o " + q(dir / "o.png"),
                                    "kdpm-shoot-photons " + q(dir / "in.kdg") + " -o " + q(dir / "o.kdph"),
                                    "kdpm-build-geometry " + q(dir / "card.json") + " -o " + q(dir / "o.kdg")}) {
         INFO(cmd);
+        const auto start = std::chrono::steady_clock::now();
         const auto r = test::run_tool(cmd);
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(3));
         CHECK(test::is_clean_error(r));
         CHECK_THAT(r.output, Catch::Contains("not a regular file"));
     }
+    done = true;
+    releaser.join();
 }
 
 TEST_CASE("kdpm-shoot-photons verifies the checksums of its input", "[hostile][inputs]") {

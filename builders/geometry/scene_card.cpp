@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/isolated_import.h"
 #include "formats/camera_check.h"
 #include "formats/format_error.h"
 #include "formats/scene_limits.h"
@@ -182,7 +182,7 @@ fs::path card_mesh_path(const fs::path& card_path) {
 
 Scene load_scene_input(const fs::path& input) {
     if (!is_scene_card(input)) {
-        Scene scene = import_mesh(input);
+        Scene scene = import_mesh_isolated(input);
         check_scene_extent(scene);
         frame_camera(scene);
         check_framed_camera(scene, input.string());
@@ -190,7 +190,7 @@ Scene load_scene_input(const fs::path& input) {
     }
     const fs::path mesh = card_mesh_path(input);
     const Card card = read_card(input);
-    Scene scene = import_mesh(mesh);
+    Scene scene = import_mesh_isolated(mesh);
     check_scene_extent(scene);
     apply_card(card, scene);
     return scene;

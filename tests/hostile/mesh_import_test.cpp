@@ -88,3 +88,13 @@ TEST_CASE("a mesh path that is a device, a FIFO, a folder or empty gets an accur
     CHECK(test::is_clean_error(r));
     CHECK_THAT(r.output, Catch::Contains("mesh path is empty"));
 }
+
+TEST_CASE("a mesh on which Assimp aborts is an error of the tool, not its end", "[hostile][mesh]") {
+    test::TempDir dir;
+    // Found by fuzz_mesh_import: Assimp's triangulation asserts (and aborts) on this OFF file.
+    const std::string off("OFF\n3 1 0\n\n0  00 00  \0v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n1 2\n", 74);
+    test::write_file(dir / "abort.off", off);
+    const auto r = build(dir / "abort.off", dir);
+    CHECK(test::is_clean_error(r));
+    CHECK_THAT(r.output, Catch::Contains("the importer crashed"));
+}

@@ -179,7 +179,7 @@ Scene import_mesh(const std::filesystem::path& path) {
     // Triangulate only: no vertex joining, mesh merging or sorting, so source order survives.
     // On a large stack: Assimp's importers recurse once per nesting level of the file.
     const aiScene* ai = nullptr;
-    run_with_large_stack([&] { ai = importer.ReadFile(path.string(), aiProcess_Triangulate); });
+    run_with_large_stack([&] { ai = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure); });
     Scene scene = convert_scene(importer, ai, path.string());
     scene.source_name = path.filename().string();
     scene.source_hash = hash_file(path.string());
@@ -191,9 +191,10 @@ Scene import_mesh_from_memory(std::string_view bytes, const std::string& extensi
     check_mesh_nesting(bytes, extension, name);
     Assimp::Importer importer;
     const aiScene* ai = nullptr;
+    // 64 MiB: enough for the nesting the pre-check lets through, and cheap to create per call.
     run_with_large_stack([&] {
-        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate, extension.c_str());
-    });
+        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate | aiProcess_ValidateDataStructure, extension.c_str());
+    }, std::size_t{64} << 20);
     Scene scene = convert_scene(importer, ai, name);
     scene.source_name = name;
     return scene;

@@ -21,7 +21,8 @@ struct Slot {
 
 constexpr int kSlots = 64;
 Slot g_slots[kSlots];
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// SIGXFSZ: a file-size limit reached while writing ends the process, but not with a temporary left.
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
 
 struct sigaction g_previous[NSIG];
 

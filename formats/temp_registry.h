@@ -1,5 +1,5 @@
 #pragma once
-// Temporaries that a SIGINT, SIGTERM or SIGHUP must not leave behind: the handler unlinks every
+// Temporaries that a SIGINT, SIGTERM, SIGHUP or SIGXFSZ must not leave behind: the handler unlinks every
 // registered path (async-signal-safe: fixed slots, unlink only), then hands the signal to the
 // disposition it replaced (by default: the process ends). An ignored signal stays ignored.
 namespace kdpm {

@@ -158,7 +158,7 @@ TEST_CASE("an output that is an input is refused and the input survives", "[host
     CHECK(test::file_contents(kdg) == scene);
 }
 
-TEST_CASE("--threads 0 means all cores in every tool", "[hostile][inputs]") {
+TEST_CASE("every tool takes --threads 0 as all cores", "[hostile][inputs]") {
     test::TempDir dir;
     const fs::path kdg = build_scene(dir, /*light_faces_down=*/true);
     CHECK(test::run_tool("kdpm-render " + q(kdg) + " --mode direct --threads 0 -o " + q(dir / "o.png") + " --quiet")

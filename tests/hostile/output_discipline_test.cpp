@@ -96,11 +96,11 @@ TEST_CASE("an output that is one of the inputs is refused", "[hostile][output]")
     CHECK_NOTHROW(check_output_not_input(dir / "other.kdg", inputs));
 }
 
-TEST_CASE("SIGINT, SIGTERM and SIGHUP remove the temporary of a write in progress", "[hostile][output]") {
-    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+TEST_CASE("SIGINT, SIGTERM, SIGHUP and SIGXFSZ remove the temporary of a write in progress", "[hostile][output]") {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) {
         test::TempDir dir;
         const auto end = test::run_in_child([&] {
-            for (int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, SIG_DFL);  // not the test framework's
+            for (int s : {SIGINT, SIGTERM, SIGHUP, SIGXFSZ}) ::signal(s, SIG_DFL);  // not the test framework's
             write_file_atomically(dir / "out.kdph", [&](const ByteSink& sink) {
                 sink("partial", 7);
                 ::raise(sig);

@@ -186,3 +186,17 @@ TEST_CASE("a photon search radius too small to find any photon is refused", "[ho
     CHECK(test::is_clean_error(test::run_tool("kdpm-render " + q(kdg) + " " + q(dir / "tiny.kdp") + " -o " +
                                               q(dir / "o.png") + " --quiet")));
 }
+
+TEST_CASE("kdpm-view refuses an unwritable screenshot before rendering or opening a window", "[hostile][inputs]") {
+    test::TempDir dir;
+    const fs::path kdg = build_scene(dir, /*light_faces_down=*/true);
+    // No display: a viewer that got as far as its window would fail for another reason.
+    const auto end = test::run_in_child([&] {
+        ::unsetenv("DISPLAY");
+        ::unsetenv("WAYLAND_DISPLAY");
+        const auto r = test::run_tool("kdpm-view " + q(kdg) + " --frames 1 --screenshot " + q(dir / "no" / "shot.png") +
+                                      " --quiet");
+        return test::is_clean_error(r) && r.output.find("does not exist") != std::string::npos ? 0 : 1;
+    });
+    CHECK(end.exit_code == 0);
+}

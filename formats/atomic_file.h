@@ -1,7 +1,7 @@
 #pragma once
-// Writes a file so that it appears whole or not at all: a temporary beside the destination,
-// flushed to disk, then renamed over it. On failure the destination is untouched and the
-// temporary is removed.
+// Writes a file so that it appears whole or not at all, by the discipline of output_file.h:
+// a private temporary beside the (resolved) destination, flushed to disk, then renamed over it.
+// On failure the destination is untouched and the temporary is removed.
 #include <cstddef>
 #include <filesystem>
 #include <functional>

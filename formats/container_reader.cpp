@@ -100,7 +100,10 @@ void ContainerReader::parse(std::optional<FileKind> expected) {
     }
     std::vector<const SectionEntry*> order;
     for (const auto& e : sections_) order.push_back(&e);
-    std::sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->offset < b->offset; });
+    // Empty sections may share an offset with the next one: order them first so they overlap nothing.
+    std::sort(order.begin(), order.end(), [](auto* a, auto* b) {
+        return a->offset != b->offset ? a->offset < b->offset : a->byte_size < b->byte_size;
+    });
     for (std::size_t i = 1; i < order.size(); ++i) {
         if (order[i]->id == order[i - 1]->id) fail("section " + section_label(order[i]->id) + " appears twice");
         if (order[i - 1]->offset + order[i - 1]->byte_size > order[i]->offset)

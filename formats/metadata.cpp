@@ -3,7 +3,10 @@
 #include <cereal/archives/json.hpp>
 #include <cereal/types/map.hpp>
 #include <cereal/types/string.hpp>
+#include <rapidjson/document.h>
+#include <rapidjson/error/en.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -58,10 +61,14 @@ void load(Archive& ar, Metadata& m) {
 }
 
 std::string metadata_to_json(const Metadata& m) {
+    // JSON has no NaN or infinity (the writer would leave a bare key): such a statistic carries
+    // no information and is left out, so the text stays valid JSON.
+    Metadata finite = m;
+    std::erase_if(finite.statistics, [](const auto& kv) { return !std::isfinite(kv.second); });
     std::ostringstream out;
     {
         cereal::JSONOutputArchive ar(out, cereal::JSONOutputArchive::Options::Default());
-        ar(cereal::make_nvp("kdpm", m));
+        ar(cereal::make_nvp("kdpm", finite));
     }
     return out.str();
 }
@@ -89,11 +96,33 @@ bool nesting_within(std::string_view json, int max_depth) {
     return true;
 }
 
+// The shape cereal expects, checked first so that garbage gets a reason instead of a parser
+// assertion: {"kdpm": {"tool": "", "tool_version": "", "source_path": "", "source_hash": "",
+// "parameters": {"name": ""}, "statistics": {"name": 0}}}. Empty when the shape is right.
+std::string metadata_shape_error(std::string_view json) {
+    rapidjson::Document doc;
+    doc.Parse<rapidjson::kParseIterativeFlag>(json.data(), json.size());
+    if (doc.HasParseError()) return std::string("not JSON (") + rapidjson::GetParseError_En(doc.GetParseError()) + ")";
+    if (!doc.IsObject() || !doc.HasMember("kdpm") || !doc["kdpm"].IsObject()) return "no \"kdpm\" object";
+    const auto& k = doc["kdpm"];
+    for (const char* key : {"tool", "tool_version", "source_path", "source_hash"})
+        if (!k.HasMember(key) || !k[key].IsString()) return std::string("\"") + key + "\" is missing or not a string";
+    if (!k.HasMember("parameters") || !k["parameters"].IsObject()) return "\"parameters\" is missing or not an object";
+    for (const auto& p : k["parameters"].GetObject())
+        if (!p.value.IsString()) return std::string("parameter \"") + p.name.GetString() + "\" is not a string";
+    if (!k.HasMember("statistics") || !k["statistics"].IsObject()) return "\"statistics\" is missing or not an object";
+    for (const auto& p : k["statistics"].GetObject())
+        if (!p.value.IsNumber()) return std::string("statistic \"") + p.name.GetString() + "\" is not a number";
+    return {};
+}
+
 }  // namespace
 
 Metadata metadata_from_json(std::string_view json) {
     if (json.size() > (1u << 24) || !nesting_within(json, 8))
         throw FormatError("metadata section is not valid kdpm JSON: too large or too deeply nested");
+    if (const std::string why = metadata_shape_error(json); !why.empty())
+        throw FormatError("metadata section is not valid kdpm JSON: " + why);
     Metadata m;
     try {
         std::istringstream in{std::string(json)};

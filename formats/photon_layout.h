@@ -101,13 +101,17 @@ inline constexpr std::uint32_t photon_tree_section(PhotonMapKind map, PhotonTree
 // ---- codecs ----
 
 // Shared-exponent RGB (Ward's RGBE): 8-bit mantissas, bits 24-31 the biased exponent.
-// Relative error below 1/256 of the largest channel; zero and negatives encode as 0.
+// Relative error below 1/256 of the largest channel; zero and negatives encode as 0, values
+// of 2^127 and above as the largest encodable one.
 inline std::uint32_t encode_rgbe(float r, float g, float b) {
     float m = r > g ? r : g;
     m = m > b ? m : b;
     if (!(m > 1e-32f)) return 0;
-    int e;
-    std::frexp(m, &e);                       // m = f * 2^e, f in [0.5, 1)
+    int e = 128;
+    if (std::isfinite(m)) std::frexp(m, &e);  // m = f * 2^e, f in [0.5, 1)
+    // The biased exponent has 8 bits: at 2^127 and above (and for infinity) saturate at the
+    // largest encodable value instead of wrapping to 0, which would read as black.
+    if (e > 127) e = 127;
     float scale = std::ldexp(256.0f, -e);    // largest channel maps into [128, 256)
     auto q = [&](float c) -> std::uint32_t {
         float v = c > 0.0f ? c * scale + 0.5f : 0.0f;

@@ -9,7 +9,9 @@
 #include <utility>
 #include <vector>
 
+#include "formats/camera_check.h"
 #include "formats/geometry_layout.h"
+#include "formats/scene_limits.h"
 #include "formats/section_ids.h"
 #include "formats/triangle_clip.h"
 #include "formats/validate_kinds.h"
@@ -42,6 +44,13 @@ void check_info(const ContainerReader& file, const GeometryInfo& info, const Tre
     if (info.max_depth > kMaxKdTreeDepth)
         fail(file, "tree depth " + std::to_string(info.max_depth) + " exceeds " + std::to_string(kMaxKdTreeDepth));
     if (info.up_axis > 2) fail(file, "up_axis must be 0, 1 or 2");
+    // The defaults reach the shooter and the renderer: the same limits as their options.
+    if (info.default_photons > kMaxPhotons)
+        fail(file, "default photons " + std::to_string(info.default_photons) + " exceed " + std::to_string(kMaxPhotons));
+    if (info.default_bounces > kMaxBounces)
+        fail(file, "default bounces " + std::to_string(info.default_bounces) + " exceed " + std::to_string(kMaxBounces));
+    if (info.default_k > kMaxEstimateK)
+        fail(file, "default k " + std::to_string(info.default_k) + " exceeds " + std::to_string(kMaxEstimateK));
     for (int a = 0; a < 3; ++a) {
         if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
             info.bounds_min[a] > info.bounds_max[a])
@@ -106,16 +115,34 @@ void check_indices(const ContainerReader& file, const TreeArrays& t, std::span<c
             fail(file, "triangle " + std::to_string(i) + " has material index out of range");
         if ((t.tris[i].flags & kTriangleHasNormals) && !has_normals)
             fail(file, "triangle " + std::to_string(i) + " claims shading normals but the file has none");
+        if (t.tris[i].flags & ~kTriangleHasNormals)
+            fail(file, "triangle " + std::to_string(i) + " has unknown flag bits");
+        if (t.tris[i].source_index >= tri_count)
+            fail(file, "triangle " + std::to_string(i) + " has source index out of range");
     }
-    for (std::size_t i = 0; i < materials.size(); ++i)
+    for (std::size_t i = 0; i < materials.size(); ++i) {
         if (materials[i].kind > static_cast<std::uint32_t>(MaterialKind::glass))
             fail(file, "material " + std::to_string(i) + " has an unknown kind");
+        const MaterialRecord& m = materials[i];
+        for (int c = 0; c < 3; ++c)
+            if (!(m.diffuse[c] >= 0.0f && m.specular[c] >= 0.0f && m.transmission[c] >= 0.0f && m.emission[c] >= 0.0f) ||
+                !std::isfinite(m.diffuse[c] + m.specular[c] + m.transmission[c] + m.emission[c]))
+                fail(file, "material " + std::to_string(i) + " has a negative or non-finite colour");
+        if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass) && !(m.ior > 0.0f && std::isfinite(m.ior)))
+            fail(file, "material " + std::to_string(i) + " has an index of refraction that is not positive");
+    }
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const AreaLightRecord& l = lights[i];
         if (l.shape > static_cast<std::uint32_t>(LightShape::parallelogram))
             fail(file, "light " + std::to_string(i) + " has an unknown shape");
         if (l.triangle != 0xffffffffu && l.triangle >= tri_count)
             fail(file, "light " + std::to_string(i) + " names a triangle out of range");
+        const float values[] = {l.p0[0], l.p0[1], l.p0[2], l.e1[0], l.e1[1], l.e1[2], l.e2[0], l.e2[1], l.e2[2],
+                                l.radiance[0], l.radiance[1], l.radiance[2], l.area, l.power};
+        for (float v : values)
+            if (!std::isfinite(v)) fail(file, "light " + std::to_string(i) + " has a value that is not finite");
+        if (!(l.area > 0.0f) || l.power < 0.0f || l.radiance[0] < 0.0f || l.radiance[1] < 0.0f || l.radiance[2] < 0.0f)
+            fail(file, "light " + std::to_string(i) + " has a non-positive area or a negative power");
     }
 }
 
@@ -183,11 +210,31 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
     }
 }
 
+// The element type each section's writer declares: a reader must not take u32s for records.
+void check_element_types(const ContainerReader& file) {
+    const std::pair<std::uint32_t, ElementType> expected[] = {
+        {section::geo_info, ElementType::record},      {section::geo_nodes, ElementType::record},
+        {section::geo_leaf_indices, ElementType::u32}, {section::geo_triangles, ElementType::record},
+        {section::geo_normals, ElementType::record},   {section::geo_materials, ElementType::record},
+        {section::geo_lights, ElementType::record},    {section::geo_camera, ElementType::record},
+        {section::metadata, ElementType::text}};
+    for (const auto& [id, type] : expected)
+        if (const SectionEntry* e = file.find(id); e && e->element_type != static_cast<std::uint32_t>(type))
+            fail(file, "section " + ContainerReader::section_label(id) + " has element type " +
+                           std::to_string(e->element_type) + ", expected " +
+                           std::to_string(static_cast<std::uint32_t>(type)));
+}
+
 }  // namespace
 
 void validate_geometry_file(const ContainerReader& file, const ValidationOptions& options) {
     const GeometryInfo& info = file.record<GeometryInfo>(section::geo_info);
-    file.record<CameraRecord>(section::geo_camera);
+    check_element_types(file);
+    try {
+        check_camera(file.record<CameraRecord>(section::geo_camera), file.name() + ": invalid geometry file");
+    } catch (const std::runtime_error& e) {
+        throw FormatError(e.what());
+    }
     TreeArrays t{file.section<KdNode>(section::geo_nodes), file.section<std::uint32_t>(section::geo_leaf_indices),
                  file.section<TriangleRecord>(section::geo_triangles)};
     const auto materials = file.section<MaterialRecord>(section::geo_materials);

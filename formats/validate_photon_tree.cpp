@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "formats/photon_layout.h"
+#include "formats/scene_limits.h"
 #include "formats/section_ids.h"
 #include "formats/validate_kinds.h"
 
@@ -38,6 +39,11 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
             info.bounds_min[a] > info.bounds_max[a])
             fail("bounds are not finite and ordered");
     if (info.max_depth > kMaxPhotonTreeDepth) fail("max_depth exceeds " + std::to_string(kMaxPhotonTreeDepth));
+    // The renderer derives its search radius from query_radius.
+    if (!(info.query_radius >= 0.0f) || !std::isfinite(info.query_radius) ||
+        radius_too_small(info.query_radius, info.bounds_min, info.bounds_max))
+        fail("query_radius " + radius_limit_text(info.query_radius, info.bounds_min, info.bounds_max) +
+             " (or negative, or not finite)");
 
     const float* coord[3] = {x.data(), y.data(), z.data()};
     for (std::uint64_t i = 0; i < n; ++i) {

@@ -1,7 +1,9 @@
 // kdpm-validate FILE: exit 0 when the file is sound, else a one-line reason and exit 1.
+#include <filesystem>
 #include <iostream>
 
 #include "formats/container_reader.h"
+#include "formats/output_file.h"
 #include "formats/tree_validation.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
@@ -18,6 +20,9 @@ int main(int argc, char** argv) {
         .flag("quiet", &quiet, "print nothing when the file is sound");
     args.parse(argc, argv);
     return cli::run_tool("kdpm-validate", [&] {
+        // A temporary of an interrupted write is never a valid file, however its bytes look.
+        if (is_output_temporary_name(std::filesystem::path(path).filename().string()))
+            throw FormatError(path + ": a temporary left by an interrupted kdpm write; safe to delete");
         auto reader = ContainerReader::open(path);
         validate_file(reader, options);
         if (!quiet) std::cout << path << ": ok (" << file_kind_info(reader.kind()).name << ")\n";

@@ -29,6 +29,7 @@ GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& param
     for (const TriangleRecord& t : scene.triangles)
         if (t.material >= scene.materials.size()) throw FormatError("triangle material index out of range");
 
+    check_scene_extent(scene);
     const KdTree tree = build_sah_kd_tree(scene.triangles, params, progress);
     // assemble_geometry_file frames a camera when the scene has none.
     return GeometryBuild{assemble_geometry_file(scene, tree, params), tree.stats};

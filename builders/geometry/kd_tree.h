@@ -16,6 +16,7 @@ struct KdTreeStats {
     std::uint64_t empty_leaves = 0;
     std::uint64_t leaf_references = 0;   // total length of the leaf index array
     std::uint32_t max_depth = 0;         // inner nodes on the longest root-to-leaf path
+    std::uint32_t max_leaf_triangles = 0;  // largest leaf
     double mean_leaf_triangles = 0.0;    // over non-empty leaves
     double sah_cost = 0.0;               // K_T * sum inner SA + K_I * sum leaf SA * n, over root SA
 };
@@ -26,6 +27,10 @@ struct KdTree {
     std::vector<std::uint32_t> leaf_indices;
     KdTreeStats stats;
 };
+
+// Beyond this many triangles in one leaf (copies of one triangle, or many overlapping ones that
+// no split separates) every ray through the leaf tests them all: the build warns.
+inline constexpr std::uint32_t kLargeLeafTriangles = 1024;
 
 // Walks a tree in file layout and measures it (used by the builder and by tests).
 KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds, const KdBuildParams& params);

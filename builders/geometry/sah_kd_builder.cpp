@@ -392,6 +392,7 @@ KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds
         if (n.is_leaf()) {
             ++s.leaves;
             s.leaf_references += n.count();
+            s.max_leaf_triangles = std::max(s.max_leaf_triangles, n.count());
             if (n.count() == 0) ++s.empty_leaves;
             else ++nonempty;
             s.max_depth = std::max(s.max_depth, e.depth);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "formats/math_constants.h"
+#include "formats/format_error.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {
@@ -61,6 +63,22 @@ void add_emissive_triangle_lights(Scene& scene) {
         l.area = 0.5f * length(n);
         l.power = kPi * l.area * (e[0] + e[1] + e[2]) / 3.0f;
         scene.lights.push_back(l);
+    }
+}
+
+void check_scene_extent(const Scene& scene) {
+    for (const TriangleRecord& t : scene.triangles) {
+        float v[3][3];
+        triangle_vertices(t, v);
+        for (const auto& p : v)
+            for (float x : p)
+                if (std::isfinite(x) && std::fabs(x) > kMaxSceneCoordinate) {
+                    char text[160];
+                    std::snprintf(text, sizeof text,
+                                  "the scene reaches coordinate %g, beyond %g where surface areas overflow a float: "
+                                  "scale it down", x, kMaxSceneCoordinate);
+                    throw FormatError(text);
+                }
     }
 }
 

@@ -38,4 +38,10 @@ void add_emissive_triangle_lights(Scene& scene);
 // Sets a camera that sees the whole scene from the front along the up axis (bare meshes).
 void frame_camera(Scene& scene);
 
+// Surface areas (the SAH cost, light areas) are products of two extents: beyond this coordinate
+// they overflow a float and every cost turns inf or NaN.
+inline constexpr float kMaxSceneCoordinate = 1e18f;
+// Throws FormatError when a usable triangle reaches past kMaxSceneCoordinate.
+void check_scene_extent(const Scene& scene);
+
 }  // namespace kdpm

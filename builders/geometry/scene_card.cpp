@@ -3,14 +3,17 @@
 #include <rapidjson/document.h>
 #include <rapidjson/error/en.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
 
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/isolated_import.h"
+#include "formats/camera_check.h"
 #include "formats/format_error.h"
+#include "formats/scene_limits.h"
 
 namespace kdpm {
 
@@ -30,6 +33,9 @@ struct Card {
         for (unsigned i = 0; i < 3; ++i) {
             if (!v[i].IsNumber()) fail(std::string("\"") + key + "\" must be an array of 3 numbers");
             out[i] = static_cast<float>(v[i].GetDouble());
+            if (!std::isfinite(out[i]))
+                fail(std::string("\"") + key + "\" has a value that does not fit a float: " +
+                     std::to_string(v[i].GetDouble()));
         }
     }
     std::uint32_t count(const Value& v, const char* key, std::uint32_t lo, std::uint32_t hi) const {
@@ -45,14 +51,26 @@ struct Card {
     }
 };
 
+Card parse_card(std::string json, const std::string& name);
+
 Card read_card(const fs::path& path) {
+    std::error_code ec;
+    const auto status = fs::status(path, ec);
+    if (ec || !fs::exists(status)) throw FormatError(path.string() + ": no such scene card");
+    // Checked before opening: a FIFO would block the open, a device would never end.
+    if (!fs::is_regular_file(status)) throw FormatError(path.string() + ": the scene card is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FormatError(path.string() + ": cannot open scene card");
     std::ostringstream text;
     text << in.rdbuf();
-    Card card{path.string(), {}};
+    return parse_card(text.str(), path.string());
+}
+
+Card parse_card(std::string json, const std::string& name) {
+    Card card{name, {}};
+    if (json.compare(0, 3, "\xEF\xBB\xBF") == 0) json.erase(0, 3);  // a UTF-8 byte order mark, as some editors write
     // Iterative parsing: a hostile card cannot exhaust the stack.
-    card.doc.Parse<rapidjson::kParseIterativeFlag>(text.str().c_str());
+    card.doc.Parse<rapidjson::kParseIterativeFlag>(json.c_str());
     if (card.doc.HasParseError())
         card.fail(std::string("not valid JSON: ") + rapidjson::GetParseError_En(card.doc.GetParseError()) +
                   " at byte " + std::to_string(card.doc.GetErrorOffset()));
@@ -61,7 +79,85 @@ Card read_card(const fs::path& path) {
     return card;
 }
 
+// A camera framed from the bounds fails only for a scene too large for float arithmetic.
+void check_framed_camera(const Scene& scene, const std::string& name) {
+    try {
+        check_camera(scene.camera, name + " (framed from the scene bounds)");
+    } catch (const std::runtime_error& e) {
+        throw FormatError(e.what());
+    }
+}
+
+// Everything a card sets beyond its mesh: up axis, defaults, lights, camera.
+void apply_card(const Card& card, Scene& scene) {
+    const Value& doc = card.doc;
+    std::uint32_t up = 1;
+    if (doc.HasMember("up")) {
+        const Value& u = doc["up"];
+        const std::string s = u.IsString() ? u.GetString() : "";
+        if (s == "x" || s == "+x") up = 0;
+        else if (s == "y" || s == "+y") up = 1;
+        else if (s == "z" || s == "+z") up = 2;
+        else card.fail("\"up\" must be \"x\", \"y\" or \"z\"");
+    }
+    scene.up_axis = up;
+    // The limits of the options these defaults stand in for (kdpm-shoot-photons, kdpm-render).
+    if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, kMaxPhotons);
+    if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, kMaxBounces);
+    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, kMaxEstimateK);
+    if (doc.HasMember("lights")) {
+        const Value& lights = doc["lights"];
+        if (!lights.IsArray()) card.fail("\"lights\" must be an array");
+        for (const Value& l : lights.GetArray()) {
+            if (!l.IsObject()) card.fail("each light must be an object");
+            card.only_keys(l, "a light", {"p0", "e1", "e2", "radiance", "comment"});
+            for (const char* key : {"p0", "e1", "e2", "radiance"})
+                if (!l.HasMember(key)) card.fail(std::string("a light needs \"") + key + "\"");
+            float p0[3], e1[3], e2[3], radiance[3];
+            card.vec3(l["p0"], "p0", p0);
+            card.vec3(l["e1"], "e1", e1);
+            card.vec3(l["e2"], "e2", e2);
+            card.vec3(l["radiance"], "radiance", radiance);
+            const AreaLightRecord light = make_parallelogram_light(p0, e1, e2, radiance);
+            if (!std::isfinite(light.area) || !std::isfinite(light.power))
+                card.fail("light " + std::to_string(scene.lights.size()) + ": its area or power overflows a float");
+            if (radiance[0] < 0.0f || radiance[1] < 0.0f || radiance[2] < 0.0f)
+                card.fail("light " + std::to_string(scene.lights.size()) + ": \"radiance\" must not be negative");
+            scene.lights.push_back(light);
+        }
+    }
+    if (doc.HasMember("camera")) {
+        const Value& c = doc["camera"];
+        if (!c.IsObject()) card.fail("\"camera\" must be an object");
+        card.only_keys(c, "the camera", {"eye", "lookat", "up", "vfov", "width", "height", "comment"});
+        for (const char* key : {"eye", "lookat", "up", "vfov"})
+            if (!c.HasMember(key)) card.fail(std::string("the camera needs \"") + key + "\"");
+        CameraRecord& cam = scene.camera;
+        card.vec3(c["eye"], "eye", cam.eye);
+        card.vec3(c["lookat"], "lookat", cam.lookat);
+        card.vec3(c["up"], "up", cam.up);
+        if (!c["vfov"].IsNumber() || !(c["vfov"].GetDouble() > 0.0 && c["vfov"].GetDouble() < 180.0))
+            card.fail("\"vfov\" must be a number of degrees in (0, 180)");
+        cam.vfov_degrees = static_cast<float>(c["vfov"].GetDouble());
+        cam.width = c.HasMember("width") ? card.count(c["width"], "width", 1, kMaxImageSide) : 512;
+        cam.height = c.HasMember("height") ? card.count(c["height"], "height", 1, kMaxImageSide) : 512;
+        try {
+            check_camera(cam, card.name);
+        } catch (const std::runtime_error& e) {
+            throw FormatError(e.what());
+        }
+        scene.has_camera = true;
+    } else {
+        frame_camera(scene);
+        check_framed_camera(scene, card.name);
+    }
+}
+
 }  // namespace
+
+void apply_scene_card(const std::string& json, const std::string& name, Scene& scene) {
+    apply_card(parse_card(json, name), scene);
+}
 
 bool is_scene_card(const fs::path& input) {
     std::string ext = input.extension().string();
@@ -86,62 +182,17 @@ fs::path card_mesh_path(const fs::path& card_path) {
 
 Scene load_scene_input(const fs::path& input) {
     if (!is_scene_card(input)) {
-        Scene scene = import_mesh(input);
+        Scene scene = import_mesh_isolated(input);
+        check_scene_extent(scene);
         frame_camera(scene);
+        check_framed_camera(scene, input.string());
         return scene;
     }
     const fs::path mesh = card_mesh_path(input);
     const Card card = read_card(input);
-    const Value& doc = card.doc;
-    std::uint32_t up = 1;
-    if (doc.HasMember("up")) {
-        const Value& u = doc["up"];
-        const std::string s = u.IsString() ? u.GetString() : "";
-        if (s == "x" || s == "+x") up = 0;
-        else if (s == "y" || s == "+y") up = 1;
-        else if (s == "z" || s == "+z") up = 2;
-        else card.fail("\"up\" must be \"x\", \"y\" or \"z\"");
-    }
-    Scene scene = import_mesh(mesh);
-    scene.up_axis = up;
-    if (doc.HasMember("photons")) scene.photons = card.count(doc["photons"], "photons", 1, 1u << 30);
-    if (doc.HasMember("bounces")) scene.bounces = card.count(doc["bounces"], "bounces", 0, 1000);
-    if (doc.HasMember("k")) scene.k = card.count(doc["k"], "k", 1, 4096);
-    if (doc.HasMember("lights")) {
-        const Value& lights = doc["lights"];
-        if (!lights.IsArray()) card.fail("\"lights\" must be an array");
-        for (const Value& l : lights.GetArray()) {
-            if (!l.IsObject()) card.fail("each light must be an object");
-            card.only_keys(l, "a light", {"p0", "e1", "e2", "radiance", "comment"});
-            for (const char* key : {"p0", "e1", "e2", "radiance"})
-                if (!l.HasMember(key)) card.fail(std::string("a light needs \"") + key + "\"");
-            float p0[3], e1[3], e2[3], radiance[3];
-            card.vec3(l["p0"], "p0", p0);
-            card.vec3(l["e1"], "e1", e1);
-            card.vec3(l["e2"], "e2", e2);
-            card.vec3(l["radiance"], "radiance", radiance);
-            scene.lights.push_back(make_parallelogram_light(p0, e1, e2, radiance));
-        }
-    }
-    if (doc.HasMember("camera")) {
-        const Value& c = doc["camera"];
-        if (!c.IsObject()) card.fail("\"camera\" must be an object");
-        card.only_keys(c, "the camera", {"eye", "lookat", "up", "vfov", "width", "height", "comment"});
-        for (const char* key : {"eye", "lookat", "up", "vfov"})
-            if (!c.HasMember(key)) card.fail(std::string("the camera needs \"") + key + "\"");
-        CameraRecord& cam = scene.camera;
-        card.vec3(c["eye"], "eye", cam.eye);
-        card.vec3(c["lookat"], "lookat", cam.lookat);
-        card.vec3(c["up"], "up", cam.up);
-        if (!c["vfov"].IsNumber() || !(c["vfov"].GetDouble() > 0.0 && c["vfov"].GetDouble() < 180.0))
-            card.fail("\"vfov\" must be a number of degrees in (0, 180)");
-        cam.vfov_degrees = static_cast<float>(c["vfov"].GetDouble());
-        cam.width = c.HasMember("width") ? card.count(c["width"], "width", 1, 65536) : 512;
-        cam.height = c.HasMember("height") ? card.count(c["height"], "height", 1, 65536) : 512;
-        scene.has_camera = true;
-    } else {
-        frame_camera(scene);
-    }
+    Scene scene = import_mesh_isolated(mesh);
+    check_scene_extent(scene);
+    apply_card(card, scene);
     return scene;
 }
 

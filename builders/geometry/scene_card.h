@@ -23,6 +23,10 @@ bool is_scene_card(const std::filesystem::path& input);
 // The mesh a card names, resolved ($KDPM_SCENES first when the card has "shared_scene").
 std::filesystem::path card_mesh_path(const std::filesystem::path& card);
 
+// Applies a card's text (its up axis, defaults, lights and camera; not its mesh) to an imported
+// scene. Throws FormatError with one line. load_scene_input's second half, and the fuzzer's entry.
+void apply_scene_card(const std::string& json, const std::string& name, Scene& scene);
+
 // Card or bare mesh -> complete scene (camera always set). Throws FormatError with one line.
 Scene load_scene_input(const std::filesystem::path& input);
 

@@ -6,9 +6,17 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
-#include <algorithm>
-#include <cmath>
+#include <sys/stat.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "builders/geometry/large_stack.h"
+#include "builders/geometry/mesh_nesting.h"
 #include "formats/format_error.h"
 #include "formats/metadata.h"
 
@@ -16,10 +24,13 @@ namespace kdpm {
 
 namespace {
 
+// Colours reach the kernels as they are: a non-finite one is refused, a negative one is black.
 void set3(float (&dst)[3], const aiColor3D& c) {
-    dst[0] = c.r;
-    dst[1] = c.g;
-    dst[2] = c.b;
+    const float v[3] = {c.r, c.g, c.b};
+    for (int i = 0; i < 3; ++i) {
+        if (!std::isfinite(v[i])) throw FormatError("a material colour is not finite");
+        dst[i] = std::max(v[i], 0.0f);
+    }
 }
 
 bool is_black(const aiColor3D& c) { return !(c.r > 0.0f || c.g > 0.0f || c.b > 0.0f); }
@@ -68,12 +79,21 @@ struct Walker {
     const aiScene& ai;
     Scene& scene;
 
-    void node(const aiNode& n, const aiMatrix4x4& parent) {
-        const aiMatrix4x4 world = parent * n.mTransformation;
-        aiMatrix3x3 normal_matrix(world);
-        normal_matrix.Inverse().Transpose();
-        for (unsigned i = 0; i < n.mNumMeshes; ++i) mesh(*ai.mMeshes[n.mMeshes[i]], world, normal_matrix);
-        for (unsigned i = 0; i < n.mNumChildren; ++i) node(*n.mChildren[i], world);
+    // Iterative, in source order: a node hierarchy thousands of levels deep needs no stack.
+    void walk(const aiNode& root) {
+        std::vector<std::pair<const aiNode*, aiMatrix4x4>> pending{{&root, aiMatrix4x4()}};
+        while (!pending.empty()) {
+            const auto [n, parent] = pending.back();
+            pending.pop_back();
+            const aiMatrix4x4 world = parent * n->mTransformation;
+            aiMatrix3x3 normal_matrix(world);
+            normal_matrix.Inverse().Transpose();
+            for (unsigned i = 0; i < n->mNumMeshes; ++i) {
+                if (n->mMeshes[i] >= ai.mNumMeshes) throw FormatError("a node names a mesh that does not exist");
+                mesh(*ai.mMeshes[n->mMeshes[i]], world, normal_matrix);
+            }
+            for (unsigned i = n->mNumChildren; i-- > 0;) pending.push_back({n->mChildren[i], world});
+        }
     }
 
     void mesh(const aiMesh& m, const aiMatrix4x4& world, const aiMatrix3x3& normal_matrix) {
@@ -83,49 +103,100 @@ struct Walker {
             if (face.mNumIndices != 3) continue;  // points and lines
             float p[3][3];
             TriangleNormals normals{};
+            bool usable_normals = m.HasNormals();
             for (int k = 0; k < 3; ++k) {
                 const unsigned idx = face.mIndices[k];
+                // Importers pass face indices through unchecked (PLY does).
+                if (idx >= m.mNumVertices)
+                    throw FormatError("face " + std::to_string(f) + " names vertex " + std::to_string(idx) + " of " +
+                                      std::to_string(m.mNumVertices));
                 const aiVector3D v = world * m.mVertices[idx];
                 p[k][0] = v.x, p[k][1] = v.y, p[k][2] = v.z;
-                if (m.HasNormals()) {
+                if (usable_normals) {
                     aiVector3D nn = normal_matrix * m.mNormals[idx];
                     nn.Normalize();
+                    // A zero or non-finite normal would shade with NaN: the triangle uses its own.
+                    if (!std::isfinite(nn.x + nn.y + nn.z) || nn.SquareLength() < 0.5f) usable_normals = false;
                     normals.n[k][0] = nn.x, normals.n[k][1] = nn.y, normals.n[k][2] = nn.z;
                 }
             }
             const auto index = static_cast<std::uint32_t>(scene.triangles.size());
             TriangleRecord t = make_triangle(p[0], p[1], p[2], material, index);
-            if (m.HasNormals()) t.flags |= kTriangleHasNormals;
+            if (usable_normals) t.flags |= kTriangleHasNormals;
             scene.triangles.push_back(t);
             scene.normals.push_back(normals);
         }
     }
 };
 
+// A mesh path must name a regular, non-empty file: say which it is not (a device such as
+// /dev/zero would be read forever, a FIFO would block).
+void check_mesh_file(const std::filesystem::path& path) {
+    if (path.empty() || path.filename().empty()) throw FormatError("the mesh path is empty");
+    struct stat st{};
+    if (::stat(path.c_str(), &st) != 0)
+        throw FormatError(path.string() + ": " + (errno == ENOENT ? "no such mesh file" : std::strerror(errno)));
+    if (S_ISDIR(st.st_mode)) throw FormatError(path.string() + ": the mesh path is a folder");
+    if (!S_ISREG(st.st_mode))
+        throw FormatError(path.string() + ": the mesh is not a regular file (a device, FIFO or socket)");
+    if (st.st_size == 0) throw FormatError(path.string() + ": the mesh file is empty");
+    check_mesh_nesting(path);
+}
+
 }  // namespace
 
-Scene import_mesh(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw FormatError(path.string() + ": no such mesh file");
-    Assimp::Importer importer;
-    // Triangulate only: no vertex joining, mesh merging or sorting, so source order survives.
-    const aiScene* ai = importer.ReadFile(path.string(), aiProcess_Triangulate);
+namespace {
+
+// The scene of an Assimp import (null when it failed): materials, triangles in source order,
+// emissive triangles as lights. `name` prefixes every message.
+Scene convert_scene(const Assimp::Importer& importer, const aiScene* ai, const std::string& name) {
     if (!ai || !ai->mRootNode || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         std::string why = importer.GetErrorString();
         std::replace(why.begin(), why.end(), '\n', ' ');
-        throw FormatError(path.string() + ": cannot read mesh" + (why.empty() ? "" : ": " + why));
+        throw FormatError(name + ": cannot read mesh" + (why.empty() ? "" : ": " + why));
     }
     Scene scene;
-    for (unsigned i = 0; i < ai->mNumMaterials; ++i) scene.materials.push_back(convert_material(*ai->mMaterials[i]));
-    if (scene.materials.empty()) scene.materials.push_back(MaterialRecord{{0.8f, 0.8f, 0.8f}, 0, {}, 1.0f, {}, 0, {}, 0});
-    Walker{*ai, scene}.node(*ai->mRootNode, aiMatrix4x4());
-    if (scene.triangles.empty()) throw FormatError(path.string() + ": the mesh has no triangles");
+    try {
+        for (unsigned i = 0; i < ai->mNumMaterials; ++i) scene.materials.push_back(convert_material(*ai->mMaterials[i]));
+        if (scene.materials.empty()) scene.materials.push_back(MaterialRecord{{0.8f, 0.8f, 0.8f}, 0, {}, 1.0f, {}, 0, {}, 0});
+        Walker{*ai, scene}.walk(*ai->mRootNode);
+    } catch (const FormatError& e) {
+        throw FormatError(name + ": " + e.what());
+    }
+    if (scene.triangles.empty()) throw FormatError(name + ": the mesh has no triangles");
     const bool any_normals = std::any_of(scene.triangles.begin(), scene.triangles.end(),
                                          [](const TriangleRecord& t) { return t.flags & kTriangleHasNormals; });
     if (!any_normals) scene.normals.clear();
     add_emissive_triangle_lights(scene);
+    return scene;
+}
+
+}  // namespace
+
+Scene import_mesh(const std::filesystem::path& path) {
+    check_mesh_file(path);
+    Assimp::Importer importer;
+    // Triangulate only: no vertex joining, mesh merging or sorting, so source order survives.
+    // On a large stack: Assimp's importers recurse once per nesting level of the file.
+    const aiScene* ai = nullptr;
+    run_with_large_stack([&] { ai = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure); });
+    Scene scene = convert_scene(importer, ai, path.string());
     scene.source_name = path.filename().string();
     scene.source_hash = hash_file(path.string());
+    return scene;
+}
+
+Scene import_mesh_from_memory(std::string_view bytes, const std::string& extension, const std::string& name) {
+    if (bytes.empty()) throw FormatError(name + ": the mesh file is empty");
+    check_mesh_nesting(bytes, extension, name);
+    Assimp::Importer importer;
+    const aiScene* ai = nullptr;
+    // 64 MiB: enough for the nesting the pre-check lets through, and cheap to create per call.
+    run_with_large_stack([&] {
+        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate | aiProcess_ValidateDataStructure, extension.c_str());
+    }, std::size_t{64} << 20);
+    Scene scene = convert_scene(importer, ai, name);
+    scene.source_name = name;
     return scene;
 }
 

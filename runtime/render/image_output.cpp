@@ -8,9 +8,10 @@
 #include <string>
 #include <system_error>
 
-#include <unistd.h>
-
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include "formats/output_file.h"
 
 namespace kdpm {
 
@@ -27,38 +28,39 @@ std::string lower_extension(const std::filesystem::path& p) {
     return ext;
 }
 
-// Writes interleaved float channels to `destination` through a temporary and a rename.
-void write_atomically(const std::filesystem::path& destination, int width, int height,
-                      const std::vector<Channel>& channels, bool eight_bit) {
+// Encodes interleaved float channels into a finished private temporary beside `destination`
+// (formats/output_file.h); the caller publishes it. Formats that OpenImageIO can encode to
+// memory are written through the checked writer; the others are written by OpenImageIO to the
+// temporary's path and read back whole, since some of its writers do not report a full disk.
+std::unique_ptr<OutputTemp> encode_to_temporary(const std::filesystem::path& destination, int width, int height,
+                                                const std::vector<Channel>& channels, bool eight_bit) {
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
     const int nch = static_cast<int>(channels.size());
     std::vector<float> interleaved(pixels * nch);
     for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < nch; ++c) interleaved[i * nch + c] = channels[static_cast<std::size_t>(c)].values[i];
 
-    // The temporary keeps the extension so that OpenImageIO picks the same format.
-    const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
-    std::string temp_name(1, '.');  // built by appends: GCC 12 warns falsely on "." + string
-    temp_name.append(destination.stem().string()).append(".tmp").append(std::to_string(getpid()));
-    temp_name.append(destination.extension().string());
-    const std::filesystem::path temp = folder / temp_name;
-    auto fail = [&](const std::string& why) {
-        std::error_code ec;
-        std::filesystem::remove(temp, ec);
+    auto fail = [&](const std::string& why) -> void {
         throw std::runtime_error("cannot write " + destination.string() + ": " + why);
     };
-
+    const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
     std::error_code exists_ec;
     if (!std::filesystem::is_directory(folder, exists_ec)) fail("folder " + folder.string() + " does not exist");
-    auto out = OIIO::ImageOutput::create(temp.string());
+    // The format is chosen by the destination's extension; the temporary's name has none.
+    auto out = OIIO::ImageOutput::create(destination.string());
     if (!out) fail("unsupported image format '" + destination.extension().string() + "'");
+    auto temp = std::make_unique<OutputTemp>(destination);
     OIIO::ImageSpec spec(width, height, nch, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
     spec.channelnames.clear();
     for (const Channel& c : channels) spec.channelnames.push_back(c.name);
     spec.alpha_channel = -1;
     for (int c = 0; c < nch; ++c)
         if (channels[static_cast<std::size_t>(c)].name == "Z") spec.z_channel = c;
-    if (!out->open(temp.string(), spec)) fail(out->geterror());
+
+    const bool in_memory = out->supports("ioproxy") != 0;
+    OIIO::Filesystem::IOVecOutput memory;
+    if (in_memory && !out->set_ioproxy(&memory)) fail(out->geterror());
+    if (!out->open(temp->temp_path().string(), spec)) fail(out->geterror());
     if (!out->write_image(OIIO::TypeDesc::FLOAT, interleaved.data())) {
         std::string why = out->geterror();
         out->close();
@@ -66,9 +68,18 @@ void write_atomically(const std::filesystem::path& destination, int width, int h
     }
     if (!out->close()) fail(out->geterror());
     out.reset();
-    std::error_code ec;
-    std::filesystem::rename(temp, destination, ec);
-    if (ec) fail(ec.message());
+    if (in_memory) {
+        if (memory.buffer().empty()) fail("the encoder produced no bytes");
+        temp->write(memory.buffer().data(), memory.buffer().size());
+    } else {
+        auto in = OIIO::ImageInput::open(temp->temp_path().string());
+        std::vector<float> check(pixels * nch);
+        if (!in || in->spec().width != width || in->spec().height != height ||
+            !in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, check.data()))
+            fail("the written image does not read back (is the disk full?)");
+    }
+    temp->finish();
+    return temp;
 }
 
 std::vector<Channel> rgb_channels(const Image& img) {
@@ -132,21 +143,25 @@ std::vector<std::filesystem::path> write_frame(const std::filesystem::path& dest
     std::vector<std::vector<Channel>> groups;
     if (f.aovs && f.aov_set.any()) groups = aov_groups(*f.aovs, f.aov_set, n, &names);
 
+    // Every file is encoded to its temporary first, then all are published: a failed AOV never
+    // leaves a new main image beside old AOVs.
     std::vector<std::filesystem::path> written;
+    std::vector<std::unique_ptr<OutputTemp>> temps;
     std::vector<Channel> channels = rgb_channels(main);
     if (floats)
         for (auto& g : groups)
             for (auto& c : g) channels.push_back(std::move(c));
-    write_atomically(destination, main.width, main.height, channels, !floats);
+    temps.push_back(encode_to_temporary(destination, main.width, main.height, channels, !floats));
     written.push_back(destination);
     if (!floats) {
         for (std::size_t g = 0; g < groups.size(); ++g) {
             std::filesystem::path p = destination;
             p.replace_extension("." + names[g] + ".exr");
-            write_atomically(p, main.width, main.height, groups[g], false);
+            temps.push_back(encode_to_temporary(p, main.width, main.height, groups[g], false));
             written.push_back(p);
         }
     }
+    for (auto& t : temps) t->publish();
     return written;
 }
 

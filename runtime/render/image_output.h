@@ -1,7 +1,7 @@
 #pragma once
 // Writes a rendered frame with OpenImageIO, the format chosen by the extension (.png, .exr, ...).
-// Every file is written atomically: a temporary beside the destination, then a rename, so an
-// error never leaves a half-written image. 8-bit formats receive the display image; EXR (and
+// Every file goes through the output discipline of formats/output_file.h, and the files of one
+// frame are published together, so an error never leaves a half-written or mismatched image. 8-bit formats receive the display image; EXR (and
 // other float formats) the exposed linear radiance, with the AOVs as extra channels
 // (Z; N.x N.y N.z; P.x P.y P.z; triangle). For 8-bit outputs the AOVs go to separate EXR files
 // beside it: out.depth.exr, out.normal.exr, out.position.exr, out.triangle.exr.

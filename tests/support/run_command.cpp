@@ -14,7 +14,10 @@ std::string tool_path(const std::string& tool) { return std::string(KDPM_BIN_DIR
 std::string source_path(const std::string& relative) { return std::string(KDPM_SOURCE_DIR) + "/" + relative; }
 
 CommandResult run_tool(const std::string& command) {
-    std::string full = std::string(KDPM_BIN_DIR) + "/" + command + " 2>&1 </dev/null";
+    // KDPM_TEST_BIN_DIR runs the end-to-end tests against other builds of the tools (e.g. an
+    // older main, to see a regression test fail there).
+    const char* other = std::getenv("KDPM_TEST_BIN_DIR");
+    std::string full = std::string(other && *other ? other : KDPM_BIN_DIR) + "/" + command + " 2>&1 </dev/null";
     FILE* pipe = ::popen(full.c_str(), "r");
     if (!pipe) throw std::runtime_error("popen failed");
     CommandResult r{0, {}};

@@ -8,6 +8,7 @@
 
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/geometry/scene_card.h"
+#include "formats/output_file.h"
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
 
     return cli::run_tool("kdpm-build-geometry", [&] {
         if (output.empty()) throw std::runtime_error("no output file given (-o FILE)");
+        std::vector<std::filesystem::path> inputs{input};
+        if (is_scene_card(input)) inputs.push_back(card_mesh_path(input));
+        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
         const auto start = std::chrono::steady_clock::now();
         Scene scene = load_scene_input(input);
@@ -52,6 +56,11 @@ int main(int argc, char** argv) {
         }();
         const auto built = std::chrono::steady_clock::now();
         build.writer.write(output);
+        if (!quiet && build.stats.max_leaf_triangles > kLargeLeafTriangles)
+            std::fprintf(stderr,
+                         "kdpm-build-geometry: warning: a leaf holds %u triangles (duplicate or overlapping triangles "
+                         "that no split separates); rays through it will be slow\n",
+                         build.stats.max_leaf_triangles);
         if (!quiet) {
             const KdTreeStats& s = build.stats;
             auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };

@@ -7,6 +7,8 @@
 
 #include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_shards.h"
+#include "formats/output_file.h"
+#include "formats/scene_limits.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "builders/photons/photon_map_writer.h"
 #include "formats/container_reader.h"
@@ -35,6 +37,8 @@ int main(int argc, char** argv) {
     args.parse(argc, argv);
     return cli::run_tool("kdpm-build-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdp)");
+        const std::filesystem::path inputs[] = {input};
+        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
         auto start = std::chrono::steady_clock::now();
         PhotonHitSet set = read_photon_hits(input);
@@ -47,6 +51,9 @@ int main(int argc, char** argv) {
                                             std::to_string(set.info.emitted_count) +
                                             "): merge the shards with kdpm-merge-photons first");
         }
+        if (radius_too_small(radius, set.info.bounds_min, set.info.bounds_max))
+            throw std::invalid_argument("--radius " + radius_limit_text(radius, set.info.bounds_min, set.info.bounds_max) +
+                                        ": no photon would be found (0 picks it)");
 
         PhotonTreeOptions options;
         options.builder = balanced ? PhotonTreeBuilder::balanced : PhotonTreeBuilder::vvh;

@@ -9,6 +9,7 @@
 
 #include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_shards.h"
+#include "formats/output_file.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
@@ -39,8 +40,10 @@ int main(int argc, char** argv) {
     args.parse(argc, argv);
     return cli::run_tool("kdpm-shoot-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdph)");
+        const std::filesystem::path inputs[] = {input};
+        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
-        auto geometry = GeometryFile::open(input);
+        auto geometry = GeometryFile::open(input, /*verify_checksums=*/true);
         const auto& info = geometry.info();
         ShootOptions options;
         options.photons = photons > 0 ? static_cast<std::uint64_t>(photons)

@@ -7,7 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "formats/output_file.h"
+#include "formats/scene_limits.h"
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/render/image_output.h"
@@ -85,18 +88,16 @@ int run(int argc, char** argv) {
         .option("tonemap", "reinhard|aces|none", "tone mapping for 8-bit outputs (default aces)",
                 [&](const std::string& v) { settings.post.tone_map = parse_tone_map(v); })
         .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
-        .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
+        .option("threads", &threads, "N", "CPU worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
     cli::add_camera_options(args, camera);
     args.short_name('o', "output");
     args.parse(argc, argv);
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
-    // Refuse an impossible destination before spending time on the frame.
-    const std::filesystem::path out_folder = std::filesystem::path(output).has_parent_path()
-                                                 ? std::filesystem::path(output).parent_path()
-                                                 : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(out_folder))
-        throw std::runtime_error("cannot write " + output + ": folder " + out_folder.string() + " does not exist");
+    // Refuse an impossible destination (or one that is an input) before spending time on the frame.
+    std::vector<std::filesystem::path> inputs{geometry_path};
+    if (!photon_path.empty()) inputs.push_back(photon_path);
+    check_output_destination(output, inputs);
     ThreadLimit limit(threads);
 
     BackendSelection selected = select_backend(backend);
@@ -106,6 +107,10 @@ int run(int argc, char** argv) {
     if (!photon_path.empty()) photons = photon_path;
     LoadedScene scene = LoadedScene::load(geometry_path, photons);
     settings.camera = camera.applied_to(scene.views().camera);
+    const GeometryInfo& bounds = scene.views().geometry.info;
+    if (radius_too_small(max_radius, bounds.bounds_min, bounds.bounds_max))
+        throw std::invalid_argument("--max-radius " + radius_limit_text(max_radius, bounds.bounds_min, bounds.bounds_max) +
+                                    ": no photon would be found (0: no limit)");
     Renderer renderer(scene.views(), selected.kind);
 
     settings.width = static_cast<std::uint32_t>(width);

@@ -1,7 +1,10 @@
 // kdpm-view scene.kdg [scene.kdp]: an interactive window onto the renderer (fly camera,
 // progressive refinement, views, stats), or a scripted run that saves a screenshot.
+#include <filesystem>
 #include <string>
+#include <vector>
 
+#include "formats/output_file.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/view/viewer_config.h"
 #include "tools/cli/args.h"
@@ -40,7 +43,7 @@ int run(int argc, char** argv) {
         .option("fly", &cfg.fly_frames, "N", "scripted: first fly forward for N preview frames", 1, 100000)
         .option("screenshot", &cfg.screenshot, "FILE", "scripted: save the last frame as displayed (PNG, ...)")
         .flag("panel", &cfg.panel, "scripted: show the control panel; the screenshot is the window as shown")
-        .option("threads", &threads, "N", "CPU worker threads (default: all cores)", 1, 4096)
+        .option("threads", &threads, "N", "CPU worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &cfg.quiet, "print nothing but errors");
     cli::add_camera_options(args, cfg.camera);
     args.parse(argc, argv);
@@ -51,6 +54,12 @@ int run(int argc, char** argv) {
     cfg.max_spp = static_cast<std::uint32_t>(spp);
     cfg.preview_divisor = static_cast<std::uint32_t>(preview);
     cfg.light_samples = static_cast<std::uint32_t>(light_samples);
+    // A screenshot that cannot be written is refused before any frame is rendered.
+    if (!cfg.screenshot.empty()) {
+        std::vector<std::filesystem::path> inputs{cfg.geometry_path};
+        if (!cfg.photon_path.empty()) inputs.push_back(cfg.photon_path);
+        check_output_destination(cfg.screenshot, inputs);
+    }
     ThreadLimit limit(threads);
     return run_viewer(cfg);
 }

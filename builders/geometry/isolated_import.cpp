@@ -1,0 +1,133 @@
+#include "builders/geometry/isolated_import.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "builders/geometry/scene_import.h"
+#include "formats/format_error.h"
+
+namespace kdpm {
+
+namespace {
+
+// The scene as the child sends it: a status byte (0: scene, 1: error message), then each
+// field as a length and raw bytes. Both ends are this program, so the layout is the memory one.
+void put_bytes(std::string& out, const void* data, std::uint64_t size) {
+    out.append(reinterpret_cast<const char*>(&size), sizeof size);
+    out.append(static_cast<const char*>(data), size);
+}
+template <class T>
+void put_vector(std::string& out, const std::vector<T>& v) {
+    put_bytes(out, v.data(), v.size() * sizeof(T));
+}
+
+struct Reader {
+    const std::string& in;
+    std::size_t at = 1;
+    std::string bytes() {
+        std::uint64_t size = 0;
+        if (in.size() - at < sizeof size) throw FormatError("the mesh importer's reply is cut short");
+        std::memcpy(&size, in.data() + at, sizeof size);
+        at += sizeof size;
+        if (in.size() - at < size) throw FormatError("the mesh importer's reply is cut short");
+        std::string s = in.substr(at, size);
+        at += size;
+        return s;
+    }
+    template <class T>
+    std::vector<T> vector() {
+        const std::string s = bytes();
+        if (s.size() % sizeof(T) != 0) throw FormatError("the mesh importer's reply is malformed");
+        std::vector<T> v(s.size() / sizeof(T));
+        if (!s.empty()) std::memcpy(v.data(), s.data(), s.size());
+        return v;
+    }
+};
+
+std::string encode(const Scene& s) {
+    std::string out(1, '\0');
+    put_vector(out, s.triangles);
+    put_vector(out, s.normals);
+    put_vector(out, s.materials);
+    put_vector(out, s.lights);
+    put_bytes(out, s.source_name.data(), s.source_name.size());
+    put_bytes(out, s.source_hash.data(), s.source_hash.size());
+    return out;
+}
+
+Scene decode(const std::string& in) {
+    Reader r{in};
+    Scene s;
+    s.triangles = r.vector<TriangleRecord>();
+    s.normals = r.vector<TriangleNormals>();
+    s.materials = r.vector<MaterialRecord>();
+    s.lights = r.vector<AreaLightRecord>();
+    s.source_name = r.bytes();
+    s.source_hash = r.bytes();
+    return s;
+}
+
+bool write_all(int fd, const std::string& data) {
+    std::size_t done = 0;
+    while (done < data.size()) {
+        const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+Scene import_mesh_isolated(const std::filesystem::path& path) {
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw FormatError("cannot start the mesh importer: " + std::string(std::strerror(errno)));
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(fds[0]);
+        ::close(fds[1]);
+        throw FormatError("cannot start the mesh importer: " + std::string(std::strerror(errno)));
+    }
+    if (pid == 0) {
+        ::close(fds[0]);
+        // Assimp prints its assertion messages; the parent reports the failure in one line.
+        if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+        std::string reply;
+        try {
+            reply = encode(import_mesh(path));
+        } catch (const std::exception& e) {
+            reply.assign(1, '\1');
+            reply.append(e.what());
+        }
+        ::_exit(write_all(fds[1], reply) ? 0 : 1);
+    }
+    ::close(fds[1]);
+    std::string reply;
+    char buf[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fds[0], buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        reply.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(fds[0]);
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFSIGNALED(status))
+        throw FormatError(path.string() + ": cannot read mesh: the importer crashed (" + ::strsignal(WTERMSIG(status)) + ")");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty())
+        throw FormatError(path.string() + ": cannot read mesh: the importer failed");
+    if (reply[0] == '\1') throw FormatError(reply.substr(1));
+    return decode(reply);
+}
+
+}  // namespace kdpm

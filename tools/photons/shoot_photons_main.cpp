@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
         const std::filesystem::path inputs[] = {input};
         check_output_destination(output, inputs);
         ThreadLimit limit(threads);
-        auto geometry = GeometryFile::open(input, /*verify_checksums=*/true);
+        auto geometry = GeometryFile::open(input);  // checksums verified on open
         const auto& info = geometry.info();
         ShootOptions options;
         options.photons = photons > 0 ? static_cast<std::uint64_t>(photons)

@@ -1,6 +1,8 @@
 // The CUDA-free build's answer to device detection: there is never a device.
 #include "runtime/backend/cuda_device.h"
 
+#include <stdexcept>
+
 namespace kdpm {
 
 CudaDeviceStatus cuda_device_status() {
@@ -10,5 +12,7 @@ CudaDeviceStatus cuda_device_status() {
 }
 
 bool cuda_backend_built() { return false; }
+
+void use_cuda_device(int) { throw std::runtime_error("this build of kdpm has no CUDA backend"); }
 
 }  // namespace kdpm

@@ -1,7 +1,8 @@
 // The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
-#include "runtime/render/cpu_device.h"
+#include "runtime/backend/cpu_device.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/render/light_distribution.h"
+#include "runtime/render/photon_density_pass.h"
 
 namespace kdpm {
 
@@ -17,6 +18,12 @@ public:
                                                           plan.settings.max_radius);
         const LightDistributionView lights{light_cdf_.data(), static_cast<std::uint32_t>(light_cdf_.size())};
         run_frame(device, scene_.geometry, lights, gather, plan, linear, aovs, times);
+    }
+
+    std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                      std::uint32_t k) override {
+        CpuDevice device;
+        return run_photon_density(device, scene_.photons.global, positions, normals, k);
     }
 
 private:

@@ -46,7 +46,7 @@ class Viewer {
 public:
     Viewer(const ViewerConfig& cfg, const LoadedScene& scene, Renderer& renderer, GlWindow& window)
         : cfg_(cfg), renderer_(renderer), window_(window),
-          camera_(scene.views().camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
+          camera_(scene.views().camera, scene.views().geometry.info), worker_(renderer),
           schedule_(1, 1, cfg.max_spp, cfg.preview_divisor) {
         image_size(cfg, scene.views().camera, width_, height_);
         schedule_ = RefinementSchedule(width_, height_, cfg.max_spp, cfg.preview_divisor);

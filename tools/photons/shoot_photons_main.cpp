@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include "builders/photons/photon_hits_file.h"
+#include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
@@ -19,6 +21,7 @@ int main(int argc, char** argv) {
     std::string input, output;
     bool quiet = false;
     int photons = 0, bounces = -1, threads = 0, seed = 0;
+    BackendRequest backend = BackendRequest::cpu;
     cli::Args args("kdpm-shoot-photons", "Shoots photons from the area lights of a .kdg scene into a photon hit file (.kdph).");
     args.positional("SCENE.kdg", &input, "geometry file from kdpm-build-geometry")
         .option("output", &output, "FILE.kdph", "output file")
@@ -26,6 +29,8 @@ int main(int argc, char** argv) {
         .option("bounces", &bounces, "B", "most bounces per path (default: the scene card's, else 4)", 0, 255)
         .option("seed", &seed, "S", "random seed (default 0)", 0, 1 << 30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
+        .option("backend", "auto|cpu|cuda", "where paths are traced (default cpu; auto: CUDA when a device exists)",
+                [&](const std::string& v) { backend = parse_backend_request(v); })
         .flag("quiet", &quiet, "print nothing on success");
     args.short_name('o', "output").short_name('n', "photons");
     args.parse(argc, argv);
@@ -40,6 +45,9 @@ int main(int argc, char** argv) {
         options.max_bounces = bounces >= 0 ? static_cast<std::uint32_t>(bounces)
                                            : (info.default_bounces > 0 && info.default_bounces <= 255 ? info.default_bounces : 4u);
         options.seed = static_cast<std::uint32_t>(seed);
+        const BackendSelection selected = select_backend(backend);
+        if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-shoot-photons: " << selected.notice << "\n";
+        options.backend = selected.kind;
 
         auto start = std::chrono::steady_clock::now();
         ShotPhotons shot = [&] {

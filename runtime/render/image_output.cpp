@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include <OpenImageIO/imageio.h>
+#include "runtime/render/image_encoder.h"
 
 namespace kdpm {
 
@@ -36,7 +36,7 @@ void write_atomically(const std::filesystem::path& destination, int width, int h
     for (std::size_t i = 0; i < pixels; ++i)
         for (int c = 0; c < nch; ++c) interleaved[i * nch + c] = channels[static_cast<std::size_t>(c)].values[i];
 
-    // The temporary keeps the extension so that OpenImageIO picks the same format.
+    // The temporary keeps the extension so that the encoder picks the same format.
     const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
     std::string temp_name(1, '.');  // built by appends: GCC 12 warns falsely on "." + string
     temp_name.append(destination.stem().string()).append(".tmp").append(std::to_string(getpid()));
@@ -50,22 +50,10 @@ void write_atomically(const std::filesystem::path& destination, int width, int h
 
     std::error_code exists_ec;
     if (!std::filesystem::is_directory(folder, exists_ec)) fail("folder " + folder.string() + " does not exist");
-    auto out = OIIO::ImageOutput::create(temp.string());
-    if (!out) fail("unsupported image format '" + destination.extension().string() + "'");
-    OIIO::ImageSpec spec(width, height, nch, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-    spec.channelnames.clear();
-    for (const Channel& c : channels) spec.channelnames.push_back(c.name);
-    spec.alpha_channel = -1;
-    for (int c = 0; c < nch; ++c)
-        if (channels[static_cast<std::size_t>(c)].name == "Z") spec.z_channel = c;
-    if (!out->open(temp.string(), spec)) fail(out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, interleaved.data())) {
-        std::string why = out->geterror();
-        out->close();
-        fail(why);
-    }
-    if (!out->close()) fail(out->geterror());
-    out.reset();
+    std::vector<std::string> names;
+    for (const Channel& c : channels) names.push_back(c.name);
+    const std::string why = encode_image_file(temp, width, height, names, interleaved, eight_bit);
+    if (!why.empty()) fail(why);
     std::error_code ec;
     std::filesystem::rename(temp, destination, ec);
     if (ec) fail(ec.message());

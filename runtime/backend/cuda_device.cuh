@@ -67,10 +67,12 @@ public:
     std::size_t allocations() const { return allocations_; }  // cudaMalloc calls so far
 
 private:
+    // An empty array still takes its place in the order, so that each array keeps its buffer
+    // when a frame leaves out an optional one (an AOV, the gather's) that the next asks for.
     void* take(std::size_t bytes) {
-        if (bytes == 0) return nullptr;
         if (next_ == pool_.size()) pool_.emplace_back();
         DeviceBuffer& slot = pool_[next_++];
+        if (bytes == 0) return nullptr;
         if (slot.size() < bytes) {
             slot = DeviceBuffer();  // free first, so the old and new buffer never both count
             slot = DeviceBuffer(bytes);

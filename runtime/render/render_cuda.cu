@@ -19,7 +19,7 @@ namespace {
 
 class CudaFrameBackend final : public FrameBackend {
 public:
-    explicit CudaFrameBackend(const SceneViews& scene) : scene_(scene) {
+    explicit CudaFrameBackend(const SceneViews& scene) {
         StopWatch watch;
         // The current device (0 unless use_cuda_device chose another); a broken driver or a
         // device in use by another exclusive process fails here, with one line.
@@ -50,7 +50,6 @@ public:
     double upload_ms() const override { return upload_ms_; }
 
 private:
-    SceneViews scene_;
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;

@@ -1,7 +1,11 @@
 // Device detection through the CUDA runtime. A missing driver is reported, not fatal.
 #include "runtime/backend/cuda_device.h"
 
+#include <stdexcept>
+
 #include <cuda_runtime.h>
+
+#include "runtime/backend/cuda_check.h"
 
 namespace kdpm {
 
@@ -20,6 +24,15 @@ CudaDeviceStatus cuda_device_status() {
     }
     s.device_count = count;
     return s;
+}
+
+void use_cuda_device(int index) {
+    const CudaDeviceStatus s = cuda_device_status();
+    if (s.device_count == 0) throw std::runtime_error("CUDA: no usable device (" + s.reason + ")");
+    if (index < 0 || index >= s.device_count)
+        throw std::runtime_error("CUDA: there is no device " + std::to_string(index) + " (this machine has " +
+                                 std::to_string(s.device_count) + ", numbered from 0)");
+    cuda_check(cudaSetDevice(index), "cudaSetDevice");
 }
 
 }  // namespace kdpm

@@ -1,6 +1,7 @@
 #pragma once
-// Device detection. Compiled against the CUDA runtime only when the build has the CUDA backend
-// (KDPM_HAVE_CUDA); otherwise a stub reports that there is none. Safe to call without a driver.
+// Device detection and selection. Compiled against the CUDA runtime only when the build has the
+// CUDA backend (KDPM_HAVE_CUDA); otherwise a stub reports that there is none. Safe to call
+// without a driver.
 #include <string>
 
 namespace kdpm {
@@ -11,5 +12,9 @@ struct CudaDeviceStatus {
 };
 
 CudaDeviceStatus cuda_device_status();
+
+// Makes `index` the device that later CUDA work of this thread runs on (default: device 0).
+// Throws std::runtime_error (one line) for an index no device has, or without a device.
+void use_cuda_device(int index);
 
 }  // namespace kdpm

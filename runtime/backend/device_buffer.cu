@@ -1,13 +1,32 @@
 #include "runtime/backend/device_buffer.h"
 
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "runtime/backend/cuda_check.h"
 
 namespace kdpm {
 
+namespace {
+
+std::string mib(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
+}  // namespace
+
 DeviceBuffer::DeviceBuffer(std::size_t bytes) : bytes_(bytes) {
-    if (bytes > 0) cuda_check(cudaMalloc(&ptr_, bytes), "cudaMalloc");
+    if (bytes == 0) return;
+    const cudaError_t status = cudaMalloc(&ptr_, bytes);
+    if (status != cudaSuccess) {
+        ptr_ = nullptr;
+        bytes_ = 0;
+        cuda_check(status, ("allocating " + mib(bytes) + " of device memory").c_str());
+    }
 }
 
 DeviceBuffer DeviceBuffer::upload(const void* host, std::size_t bytes) {

@@ -5,16 +5,12 @@
 #include <string>
 
 #include "formats/photon_hits_summary.h"
-#include "runtime/backend/cpu_parallel_for.h"
-#include "runtime/photons/photon_path.h"
+#include "runtime/backend/cpu_device.h"
+#include "runtime/photons/photon_shooter_cuda.h"
+#include "runtime/photons/shoot_loop.h"
 #include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
-namespace {
-
-constexpr std::uint64_t kBatch = 1u << 16;
-
-}  // namespace
 
 ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
                           const std::function<void(double)>& progress) {
@@ -36,25 +32,12 @@ ShotPhotons shoot_photons(const GeometryView& g, const ShootOptions& options,
     settings.ray_offset = photon_ray_offset(g.info);
 
     ShotPhotons shot;
-    const std::uint32_t slots = options.max_bounces + 1;
-    std::vector<PhotonHit> batch_hits;
-    std::vector<PhotonPathResult> batch_results;
-    for (std::uint64_t begin = first_path; begin < end_path; begin += kBatch) {
-        const std::uint64_t n = std::min(kBatch, end_path - begin);
-        batch_hits.resize(n * slots);
-        batch_results.assign(n, PhotonPathResult{});
-        cpu_parallel_for(
-            n,
-            [&](std::uint64_t i) {
-                batch_results[i] = trace_photon_path(g, table, settings, begin + i, batch_hits.data() + i * slots);
-            },
-            256);
-        for (std::uint64_t i = 0; i < n; ++i) {
-            shot.rays += batch_results[i].rays;
-            const PhotonHit* first = batch_hits.data() + i * slots;
-            shot.hits.insert(shot.hits.end(), first, first + batch_results[i].stored);
-        }
-        if (progress) progress(static_cast<double>(begin + n - first_path) / static_cast<double>(end_path - first_path));
+    if (options.backend == BackendKind::cuda) {
+        shot.rays = shoot_paths_on_cuda(g, lights, settings, first_path, end_path, shot.hits, progress);
+    } else {
+        CpuDevice device;
+        shot.rays = shoot_paths(device, g, table, settings, first_path, end_path,
+                                shoot_batch_size(options.max_bounces, 1u << 16, 256u << 20), shot.hits, progress);
     }
 
     auto& info = shot.info;

@@ -1,12 +1,22 @@
 #pragma once
-// The CPU driver of the shooting kernel: runs trace_photon_path for every path in batches on
-// oneTBB (each path writes only its own max_bounces + 1 slots), then compacts the slots in path
-// order, so the hits are identical whatever the thread count.
+// The driver of the shooting kernel on either backend: runs trace_photon_path for every path in
+// batches (each path writes only its own max_bounces + 1 slots; shoot_loop.h), then compacts the
+// slots in path order, so the hits are identical whatever the thread count.
+//
+// CPU and CUDA: the CUDA kernels are compiled with --fmad=false (no fused multiply-add
+// contraction, which the host compiler does not do either), and +, -, *, / and sqrt are
+// correctly rounded on both sides, so ray/triangle hits and the kd-tree walk agree bit for bit.
+// The one place the two can still differ is the emission and bounce directions: cosf/sinf in
+// cosine_direction come from glibc on the host and CUDA's libdevice on the GPU, which may round
+// differently in the last place. Such a photon's later hit can move by a few ulps, and, rarely,
+// a grazing path can hit a different triangle. The two backends' files are therefore compared
+// hit by hit within a tolerance (tests/gpu), not byte for byte.
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 #include "formats/photon_layout.h"
+#include "runtime/backend/backend_kind.h"
 #include "runtime/geometry/geometry_view.h"
 
 namespace kdpm {
@@ -18,6 +28,7 @@ struct ShootOptions {
     std::uint64_t path_begin = 0, path_end = 0;
     std::uint32_t max_bounces = 4;
     std::uint32_t seed = 0;
+    BackendKind backend = BackendKind::cpu;  // CUDA: throws std::runtime_error without a device
 };
 
 struct ShotPhotons {

@@ -1,7 +1,9 @@
 #pragma once
 // The backend-specific half of the Renderer: where the scene arrays live and how passes run.
 // The CPU backend uses the mapped sections in place; the CUDA backend uploads each once.
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "runtime/render/frame_loop.h"
 #include "runtime/render/scene_views.h"
@@ -12,6 +14,9 @@ class FrameBackend {
 public:
     virtual ~FrameBackend() = default;
     virtual void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) = 0;
+    // The photon density view over the scene's global map (see photon_density_pass.h).
+    virtual std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                              std::uint32_t k) = 0;
     virtual double upload_ms() const { return 0.0; }
 };
 

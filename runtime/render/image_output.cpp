@@ -8,10 +8,8 @@
 #include <string>
 #include <system_error>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "formats/output_file.h"
+#include "runtime/render/image_encoder.h"
 
 namespace kdpm {
 
@@ -29,9 +27,7 @@ std::string lower_extension(const std::filesystem::path& p) {
 }
 
 // Encodes interleaved float channels into a finished private temporary beside `destination`
-// (formats/output_file.h); the caller publishes it. Formats that OpenImageIO can encode to
-// memory are written through the checked writer; the others are written by OpenImageIO to the
-// temporary's path and read back whole, since some of its writers do not report a full disk.
+// (formats/output_file.h, through runtime/render/image_encoder.h); the caller publishes it.
 std::unique_ptr<OutputTemp> encode_to_temporary(const std::filesystem::path& destination, int width, int height,
                                                 const std::vector<Channel>& channels, bool eight_bit) {
     const std::size_t pixels = static_cast<std::size_t>(width) * height;
@@ -46,37 +42,13 @@ std::unique_ptr<OutputTemp> encode_to_temporary(const std::filesystem::path& des
     const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : ".";
     std::error_code exists_ec;
     if (!std::filesystem::is_directory(folder, exists_ec)) fail("folder " + folder.string() + " does not exist");
-    // The format is chosen by the destination's extension; the temporary's name has none.
-    auto out = OIIO::ImageOutput::create(destination.string());
-    if (!out) fail("unsupported image format '" + destination.extension().string() + "'");
     auto temp = std::make_unique<OutputTemp>(destination);
-    OIIO::ImageSpec spec(width, height, nch, eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
-    spec.channelnames.clear();
-    for (const Channel& c : channels) spec.channelnames.push_back(c.name);
-    spec.alpha_channel = -1;
-    for (int c = 0; c < nch; ++c)
-        if (channels[static_cast<std::size_t>(c)].name == "Z") spec.z_channel = c;
-
-    const bool in_memory = out->supports("ioproxy") != 0;
-    OIIO::Filesystem::IOVecOutput memory;
-    if (in_memory && !out->set_ioproxy(&memory)) fail(out->geterror());
-    if (!out->open(temp->temp_path().string(), spec)) fail(out->geterror());
-    if (!out->write_image(OIIO::TypeDesc::FLOAT, interleaved.data())) {
-        std::string why = out->geterror();
-        out->close();
-        fail(why);
-    }
-    if (!out->close()) fail(out->geterror());
-    out.reset();
-    if (in_memory) {
-        if (memory.buffer().empty()) fail("the encoder produced no bytes");
-        temp->write(memory.buffer().data(), memory.buffer().size());
-    } else {
-        auto in = OIIO::ImageInput::open(temp->temp_path().string());
-        std::vector<float> check(pixels * nch);
-        if (!in || in->spec().width != width || in->spec().height != height ||
-            !in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, check.data()))
-            fail("the written image does not read back (is the disk full?)");
+    std::vector<std::string> names;
+    for (const Channel& c : channels) names.push_back(c.name);
+    try {
+        encode_image(*temp, destination, width, height, names, interleaved, eight_bit);
+    } catch (const std::runtime_error& e) {
+        fail(e.what());
     }
     temp->finish();
     return temp;

@@ -1,7 +1,8 @@
 // The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
-#include "runtime/render/cpu_device.h"
+#include "runtime/backend/cpu_device.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/shading/light_power_table.h"
+#include "runtime/render/photon_density_pass.h"
 
 namespace kdpm {
 
@@ -15,6 +16,12 @@ public:
         CpuDevice device;
         const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
         run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
+    }
+
+    std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                      std::uint32_t k) override {
+        CpuDevice device;
+        return run_photon_density(device, scene_.photons.global, positions, normals, k);
     }
 
 private:

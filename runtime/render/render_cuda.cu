@@ -1,104 +1,59 @@
 // The CUDA backend: the scene's sections are uploaded once (one copy each, straight from the
 // mapped file), then every frame runs the same passes as the CPU through the grid-stride
-// launcher. Only transfers and launches are CUDA-specific.
+// launcher. The frame arrays live in a pool kept across frames (allocated again only when the
+// image grows), each kernel's block size comes from the occupancy API once, and each pass ends
+// with its one synchronisation. Only transfers and launches are CUDA-specific.
 #include <cstdint>
 #include <vector>
 
 #include "runtime/backend/cuda_check.h"
-#include "runtime/backend/cuda_parallel_for.cuh"
-#include "runtime/backend/device_buffer.h"
+#include "runtime/backend/cuda_device.cuh"
+#include "runtime/backend/device_scene_upload.cuh"
 #include "runtime/render/frame_backend.h"
 #include "runtime/shading/light_power_table.h"
+#include "runtime/render/photon_density_pass.h"
 
 namespace kdpm {
 
 namespace {
 
-struct CudaDevice {
-    template <class T>
-    struct Array {
-        DeviceBuffer buffer;
-        std::uint64_t count = 0;
-        T* data() const { return buffer.as<T>(); }
-    };
-    template <class T>
-    Array<T> array(std::uint64_t n) {
-        Array<T> a{DeviceBuffer(n * sizeof(T)), n};
-        if (n) cuda_check(cudaMemset(a.data(), 0, n * sizeof(T)), "cudaMemset");
-        return a;
-    }
-    template <class T>
-    Array<T> scratch(std::uint64_t n) {
-        return Array<T>{DeviceBuffer(n * sizeof(T)), n};
-    }
-    template <class T>
-    void to_host(const Array<T>& a, std::vector<T>& out) {
-        out.resize(a.count);
-        a.buffer.download(out.data(), a.count * sizeof(T));
-    }
-    template <class Pass>
-    void launch(std::uint64_t n, const Pass& pass) {
-        cuda_parallel_for(n, pass);
-    }
-};
-
-template <class T>
-const T* upload(std::vector<DeviceBuffer>& owned, const T* host, std::uint64_t count) {
-    if (host == nullptr || count == 0) return nullptr;
-    owned.push_back(DeviceBuffer::upload(host, count * sizeof(T)));
-    return owned.back().as<const T>();
-}
-
 class CudaFrameBackend final : public FrameBackend {
 public:
     explicit CudaFrameBackend(const SceneViews& scene) {
         StopWatch watch;
-        cuda_check(cudaSetDevice(0), "cudaSetDevice");
-        const GeometryView& h = scene.geometry;
-        device_geometry_ = h;
-        device_geometry_.nodes = upload(owned_, h.nodes, h.node_count);
-        device_geometry_.leaf_indices = upload(owned_, h.leaf_indices, h.leaf_index_count);
-        device_geometry_.triangles = upload(owned_, h.triangles, h.triangle_count);
-        device_geometry_.normals = upload(owned_, h.normals, h.normals ? h.triangle_count : 0);
-        device_geometry_.materials = upload(owned_, h.materials, h.material_count);
-        device_geometry_.lights = upload(owned_, h.lights, h.light_count);
-        device_photons_ = upload_photon_maps(owned_, scene.photons);
-        const LightPowerTable lights = light_power_table(h);
+        // The current device (0 unless use_cuda_device chose another); a broken driver or a
+        // device in use by another exclusive process fails here, with one line.
+        cuda_check(cudaFree(nullptr), "initialising the device");
+        device_geometry_ = upload_geometry(owned_, scene.geometry);
+        device_photons_ = scene.photons;
+        device_photons_.global = upload_photon_map(owned_, scene.photons.global);
+        device_photons_.caustic = upload_photon_map(owned_, scene.photons.caustic);
+        const LightPowerTable lights = light_power_table(scene.geometry);
         device_lights_ = lights.selection();
-        device_lights_.cdf = upload(owned_, lights.cdf.data(), lights.cdf.size());
+        device_lights_.cdf = upload_array(owned_, lights.cdf.data(), lights.cdf.size());
         upload_ms_ = watch.lap_ms();
     }
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
-        CudaDevice device;
+        device_.begin();
         const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings);
-        run_frame(device, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
+        run_frame(device_, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
+
+    std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                      std::uint32_t k) override {
+        device_.begin();
+        return run_photon_density(device_, device_photons_.global, positions, normals, k);
+    }
+
     double upload_ms() const override { return upload_ms_; }
 
 private:
-    static PhotonMapView upload_map(std::vector<DeviceBuffer>& owned, const PhotonMapView& h) {
-        PhotonMapView d = h;
-        d.nodes = upload(owned, h.nodes, h.node_count);
-        d.x = upload(owned, h.x, h.photon_count);
-        d.y = upload(owned, h.y, h.photon_count);
-        d.z = upload(owned, h.z, h.photon_count);
-        d.power = upload(owned, h.power, h.photon_count);
-        d.directions = upload(owned, h.directions, h.photon_count);
-        d.flags = upload(owned, h.flags, h.photon_count);
-        return d;
-    }
-    static PhotonMaps upload_photon_maps(std::vector<DeviceBuffer>& owned, const PhotonMaps& host) {
-        PhotonMaps d = host;
-        d.global = upload_map(owned, host.global);
-        d.caustic = upload_map(owned, host.caustic);
-        return d;
-    }
-
     std::vector<DeviceBuffer> owned_;
     GeometryView device_geometry_;
     PhotonMaps device_photons_;
     LightSelection device_lights_;
+    CudaDevice device_;  // the frame arrays, reused by every frame
     double upload_ms_ = 0.0;
 };
 

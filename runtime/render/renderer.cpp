@@ -45,6 +45,11 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 double Renderer::upload_ms() const { return impl_->upload_ms(); }
 
+std::vector<float> Renderer::photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                            std::uint32_t k) {
+    return impl_->photon_density(positions, normals, k);
+}
+
 RenderResult Renderer::render(const RenderSettings& settings) {
     FramePlan plan;
     plan.settings = settings;

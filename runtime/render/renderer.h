@@ -2,7 +2,9 @@
 // The frame renderer as a library: built once over a loaded scene (uploading it when the
 // backend is CUDA), then render(settings) per frame, e.g. by a viewer or a benchmark with a
 // changing camera. Also post-processes (exposure, bloom, tone mapping).
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "runtime/backend/backend_kind.h"
 #include "runtime/render/render_settings.h"
@@ -22,6 +24,11 @@ public:
     // Throws std::runtime_error (one line) on an impossible request (e.g. a photon mode without
     // photon maps, or a zero-sized image).
     RenderResult render(const RenderSettings& settings);
+
+    // The photon density view of a rendered frame's position and normal AOVs (3 floats per
+    // pixel), on this renderer's backend over the scene's global map; zeros without one.
+    std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
+                                      std::uint32_t k);
 
     BackendKind backend() const { return backend_; }
     double upload_ms() const;  // CUDA: time to copy the scene to the device

@@ -1,7 +1,5 @@
 #include "runtime/view/render_worker.h"
 
-#include "runtime/view/photon_density.h"
-
 #include <exception>
 #include <utility>
 
@@ -14,8 +12,8 @@ namespace {
 struct FrameCancelled {};
 }  // namespace
 
-RenderWorker::RenderWorker(Renderer& renderer, const PhotonMapView& density_map)
-    : renderer_(renderer), density_map_(density_map), thread_([this] { loop(); }) {}
+RenderWorker::RenderWorker(Renderer& renderer)
+    : renderer_(renderer), thread_([this] { loop(); }) {}
 
 RenderWorker::~RenderWorker() {
     {
@@ -112,8 +110,8 @@ void RenderWorker::loop() {
                 frame.result = renderer_.render(settings);
                 StopWatch watch;
                 if (job.density_k > 0)
-                    frame.density = photon_density(density_map_, frame.result.aovs.position,
-                                                   frame.result.aovs.normal, job.density_k);
+                    frame.density = renderer_.photon_density(frame.result.aovs.position, frame.result.aovs.normal,
+                                                             job.density_k);
                 frame.density_ms = watch.lap_ms();
             } catch (const FrameCancelled&) {
             } catch (const std::exception& e) {

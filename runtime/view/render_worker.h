@@ -14,7 +14,6 @@
 
 #include <tbb/task_group.h>
 
-#include "runtime/photons/photon_map_view.h"
 #include "runtime/render/renderer.h"
 
 namespace kdpm {
@@ -36,8 +35,8 @@ struct FinishedFrame {
 
 class RenderWorker {
 public:
-    // density_map: host arrays of the photon map that density jobs search (may be empty).
-    RenderWorker(Renderer& renderer, const PhotonMapView& density_map);
+    // Density jobs run on the renderer's backend over its scene's global photon map.
+    explicit RenderWorker(Renderer& renderer);
     ~RenderWorker();  // cancels the frame in flight and joins
     RenderWorker(const RenderWorker&) = delete;
     RenderWorker& operator=(const RenderWorker&) = delete;
@@ -59,7 +58,6 @@ private:
     void cancel_running_locked();
 
     Renderer& renderer_;
-    PhotonMapView density_map_;
     mutable std::mutex mutex_;
     std::condition_variable wake_, done_;
     std::optional<FrameJob> pending_;

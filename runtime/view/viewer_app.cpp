@@ -50,7 +50,7 @@ public:
     Viewer(const ViewerConfig& cfg, const LoadedScene& scene, const CameraRecord& start_camera, Renderer& renderer,
            GlWindow& window)
         : cfg_(cfg), renderer_(renderer), window_(window),
-          camera_(start_camera, scene.views().geometry.info), worker_(renderer, scene.views().photons.global),
+          camera_(start_camera, scene.views().geometry.info), worker_(renderer),
           schedule_(1, 1, cfg.max_spp, cfg.preview_divisor), max_spp_(cfg.max_spp), light_samples_(cfg.light_samples) {
         image_size(cfg, start_camera, width_, height_);
         schedule_ = RefinementSchedule(width_, height_, max_spp_, cfg.preview_divisor);

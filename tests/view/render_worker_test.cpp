@@ -36,7 +36,7 @@ FrameJob job(std::uint64_t generation, std::uint32_t size, std::uint32_t spp) {
 TEST_CASE("render worker delivers the frame it was given", "[view][worker]") {
     auto scene = floor_scene();
     Renderer renderer(scene.views(), BackendKind::cpu);
-    RenderWorker worker(renderer, PhotonMapView{});
+    RenderWorker worker(renderer);
     worker.submit(job(1, 32, 2));
     FinishedFrame f = worker.wait();
     CHECK(f.error.empty());
@@ -52,7 +52,7 @@ TEST_CASE("render worker delivers the frame it was given", "[view][worker]") {
 TEST_CASE("render worker cancels a stale frame when a newer one is submitted", "[view][worker]") {
     auto scene = floor_scene();
     Renderer renderer(scene.views(), BackendKind::cpu);
-    RenderWorker worker(renderer, PhotonMapView{});
+    RenderWorker worker(renderer);
     // Thousands of samples: finishing this frame would take minutes, so the newer frame can only
     // arrive first if the stale one is abandoned at a sample boundary.
     worker.submit(job(1, 256, 4096));
@@ -71,7 +71,7 @@ TEST_CASE("render worker cancels a stale frame when a newer one is submitted", "
 TEST_CASE("render worker lets a preview in flight finish", "[view][worker]") {
     auto scene = floor_scene();
     Renderer renderer(scene.views(), BackendKind::cpu);
-    RenderWorker worker(renderer, PhotonMapView{});
+    RenderWorker worker(renderer);
     FrameJob preview = job(1, 128, 32);
     preview.preview = true;
     worker.submit(preview);
@@ -90,7 +90,7 @@ TEST_CASE("render worker lets a preview in flight finish", "[view][worker]") {
 TEST_CASE("render worker reports a render error as text", "[view][worker]") {
     auto scene = floor_scene();
     Renderer renderer(scene.views(), BackendKind::cpu);
-    RenderWorker worker(renderer, PhotonMapView{});
+    RenderWorker worker(renderer);
     FrameJob j = job(1, 16, 1);
     j.settings.mode = RenderMode::photons;  // no photon map
     worker.submit(j);

@@ -50,7 +50,7 @@ fs::path find_scenes_root(const std::string& given, const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool markdown = false, quiet = false, no_peers = false, quick = false;
+    bool markdown = false, quiet = false, no_peers = false, quick = false, all_threads_only = false;
     int frames = 3, photons = 262144, size = 512;
     std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
     cli::Args args("kdpm-bench", "Reproduces the report's timing table on this machine, with peers in the same run.");
@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
         .option("work", &work, "DIR", "where the .kdg/.kdp files go (default: a temporary folder)")
         .flag("no-peers", &no_peers, "skip Embree and nanoflann")
         .flag("quick", &quick, "k = 2, 32, 256 only")
+        .flag("all-threads-only", &all_threads_only, "no 1-thread rows (a GPU machine's check, short of time)")
         .flag("quiet", &quiet, "no progress lines on stderr");
     args.parse(argc, argv);
     return cli::run_tool("kdpm-bench", [&] {
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
             c.name = name;
             c.card = card;
             c.work_dir = dir;
-            c.threads = all > 1 ? std::vector<int>{1, all} : std::vector<int>{1};
+            c.threads = all > 1 && !all_threads_only ? std::vector<int>{1, all} : std::vector<int>{all};
             c.ks = quick ? std::vector<int>{2, 32, 256} : std::vector<int>{2, 4, 8, 16, 32, 64, 128, 256};
             c.frames = frames;
             c.width = c.height = static_cast<std::uint32_t>(size);

@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 
 #include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_shards.h"
 #include "formats/output_file.h"
+#include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
@@ -23,6 +25,7 @@ int main(int argc, char** argv) {
     std::string input, output, paths;
     bool quiet = false;
     int photons = 0, bounces = -1, threads = 0, seed = 0;
+    BackendRequest backend = BackendRequest::cpu;
     cli::Args args("kdpm-shoot-photons", "Shoots photons from the area lights of a .kdg scene into a photon hit file (.kdph).");
     args.positional("SCENE.kdg", &input, "geometry file from kdpm-build-geometry")
         .option("output", &output, "FILE.kdph", "output file")
@@ -35,6 +38,8 @@ int main(int argc, char** argv) {
                 })
         .option("seed", &seed, "S", "random seed (default 0)", 0, 1 << 30)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
+        .option("backend", "auto|cpu|cuda", "where paths are traced (default cpu; auto: CUDA when a device exists)",
+                [&](const std::string& v) { backend = parse_backend_request(v); })
         .flag("quiet", &quiet, "print nothing on success");
     args.short_name('o', "output").short_name('n', "photons");
     args.parse(argc, argv);
@@ -54,6 +59,9 @@ int main(int argc, char** argv) {
         const PathRange range = paths.empty() ? PathRange{0, options.photons} : parse_path_range(paths, options.photons);
         options.path_begin = range.begin;
         options.path_end = range.end;
+        const BackendSelection selected = select_backend(backend);
+        if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-shoot-photons: " << selected.notice << "\n";
+        options.backend = selected.kind;
 
         auto start = std::chrono::steady_clock::now();
         ShotPhotons shot = [&] {

@@ -1,2 +1,3 @@
 # tools/render: executables of this area.
 kdpm_tool(kdpm-render render/render_main.cpp kdpm_render)
+kdpm_tool(kdpm-image-diff render/image_diff_main.cpp)

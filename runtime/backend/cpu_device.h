@@ -1,6 +1,6 @@
 #pragma once
-// The CPU backend's side of run_frame: host arrays and oneTBB launches in small grains (each
-// work item is one pixel or one vertex slot and writes only its own slots).
+// The CPU backend's Device (frame loop, photon shooting, density view): host arrays and oneTBB
+// launches in small grains (each work item writes only its own slots).
 #include <algorithm>
 #include <cstdint>
 #include <memory>
@@ -17,6 +17,7 @@ struct CpuDevice {
         std::uint64_t count = 0;
         T* data() const { return items.get(); }
     };
+    void begin() {}  // arrays own their memory; nothing is pooled
     // Zero-filled.
     template <class T>
     Array<T> array(std::uint64_t n) {
@@ -30,6 +31,12 @@ struct CpuDevice {
     template <class T>
     void to_host(const Array<T>& a, std::vector<T>& out) {
         out.assign(a.data(), a.data() + a.count);
+    }
+    template <class T>
+    Array<T> from_host(const std::vector<T>& items) {
+        Array<T> a = scratch<T>(items.size());
+        std::copy(items.begin(), items.end(), a.data());
+        return a;
     }
     template <class Pass>
     void launch(std::uint64_t n, const Pass& pass) {

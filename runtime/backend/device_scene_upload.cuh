@@ -1,0 +1,45 @@
+#pragma once
+// Copies of the scene's arrays in device memory: each mapped section goes up with one copy,
+// straight from the mapped file, and the returned view points at the device copies (owned by
+// `owned`, which must outlive the view). Used by the frame backend, photon shooting and the
+// density view alike. Include from .cu files only.
+#include <cstdint>
+#include <vector>
+
+#include "runtime/backend/device_buffer.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/photons/photon_map_view.h"
+
+namespace kdpm {
+
+template <class T>
+const T* upload_array(std::vector<DeviceBuffer>& owned, const T* host, std::uint64_t count) {
+    if (host == nullptr || count == 0) return nullptr;
+    owned.push_back(DeviceBuffer::upload(host, count * sizeof(T)));
+    return owned.back().as<const T>();
+}
+
+inline GeometryView upload_geometry(std::vector<DeviceBuffer>& owned, const GeometryView& h) {
+    GeometryView d = h;
+    d.nodes = upload_array(owned, h.nodes, h.node_count);
+    d.leaf_indices = upload_array(owned, h.leaf_indices, h.leaf_index_count);
+    d.triangles = upload_array(owned, h.triangles, h.triangle_count);
+    d.normals = upload_array(owned, h.normals, h.normals ? h.triangle_count : 0);
+    d.materials = upload_array(owned, h.materials, h.material_count);
+    d.lights = upload_array(owned, h.lights, h.light_count);
+    return d;
+}
+
+inline PhotonMapView upload_photon_map(std::vector<DeviceBuffer>& owned, const PhotonMapView& h) {
+    PhotonMapView d = h;
+    d.nodes = upload_array(owned, h.nodes, h.node_count);
+    d.x = upload_array(owned, h.x, h.photon_count);
+    d.y = upload_array(owned, h.y, h.photon_count);
+    d.z = upload_array(owned, h.z, h.photon_count);
+    d.power = upload_array(owned, h.power, h.photon_count);
+    d.directions = upload_array(owned, h.directions, h.photon_count);
+    d.flags = upload_array(owned, h.flags, h.photon_count);
+    return d;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,73 @@
+#pragma once
+// Photon shooting written once for both backends: batches of paths, each path traced by
+// trace_photon_path into its own fixed max_bounces + 1 slots (ShootPathsPass, the kernel), then
+// the slots copied to the host and compacted in path order. The hits are therefore the same
+// whatever the thread count or the backend runs the paths -- up to floating point: see
+// photon_shooter.h for where the CUDA build can differ.
+// `Device` is CpuDevice or CudaDevice (scratch<T>(n), launch(n, pass), to_host, begin).
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "formats/host_device.h"
+#include "formats/photon_layout.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/photons/photon_path.h"
+#include "runtime/shading/area_light.h"
+
+namespace kdpm {
+
+// One work item per path of the batch starting at path `first`.
+struct ShootPathsPass {
+    GeometryView geometry;
+    LightSelection lights;
+    ShootSettings settings;
+    std::uint64_t first = 0;
+    PhotonHit* slots = nullptr;  // (max_bounces + 1) per path of the batch
+    PhotonPathResult* results = nullptr;
+
+    KDPM_HD void operator()(std::uint64_t i) const {
+        const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
+        results[i] = trace_photon_path(geometry, lights, settings, first + i, slots + i * per_path);
+    }
+};
+
+// Paths per batch: `preferred` (enough to fill the backend), fewer when their slots would take
+// more than `max_bytes` (many bounces), at least 1024. The batch size does not change the hits.
+inline std::uint64_t shoot_batch_size(std::uint32_t max_bounces, std::uint64_t preferred, std::uint64_t max_bytes) {
+    const std::uint64_t per_path = (static_cast<std::uint64_t>(max_bounces) + 1) * sizeof(PhotonHit);
+    return std::max<std::uint64_t>(1024, std::min(preferred, max_bytes / per_path));
+}
+
+// Paths first_path .. end_path - 1 (a shard, or all). geometry and lights hold arrays where `dev`
+// runs. Appends the stored hits to `hits` in path order and returns the rays traced.
+template <class Device>
+std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const LightSelection& lights,
+                          const ShootSettings& settings, std::uint64_t first_path, std::uint64_t end_path,
+                          std::uint64_t batch, std::vector<PhotonHit>& hits,
+                          const std::function<void(double)>& progress) {
+    const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
+    std::uint64_t rays = 0;
+    std::vector<PhotonHit> batch_hits;
+    std::vector<PhotonPathResult> batch_results;
+    for (std::uint64_t first = first_path; first < end_path; first += batch) {
+        const std::uint64_t n = std::min(batch, end_path - first);
+        dev.begin();
+        // Every path writes its result; slots past a path's `stored` are never read.
+        auto slots = dev.template scratch<PhotonHit>(n * per_path);
+        auto results = dev.template scratch<PhotonPathResult>(n);
+        dev.launch(n, ShootPathsPass{geometry, lights, settings, first, slots.data(), results.data()});
+        dev.to_host(slots, batch_hits);
+        dev.to_host(results, batch_results);
+        for (std::uint64_t i = 0; i < n; ++i) {
+            rays += batch_results[i].rays;
+            const PhotonHit* path_hits = batch_hits.data() + i * per_path;
+            hits.insert(hits.end(), path_hits, path_hits + batch_results[i].stored);
+        }
+        if (progress) progress(static_cast<double>(first + n - first_path) / static_cast<double>(end_path - first_path));
+    }
+    return rays;
+}
+
+}  // namespace kdpm

@@ -10,6 +10,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
+#include "runtime/render/path_pass.h"
 #include "runtime/render/photon_gather_pass.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/render/shade_pass.h"
@@ -26,6 +27,7 @@ struct FramePlan {
     float epsilon = 1e-4f;
     bool gather_photons = false;
     bool direct_light = false;
+    bool path_trace = false;  // --mode path: one path pass per sample instead of trace/gather/shade
 };
 
 template <class Device>
@@ -33,15 +35,17 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
                const PhotonGatherPass& gather_template,
                const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
-    const std::uint64_t slots = pixels * kMaxDiffuseVertices;
+    // The path pass keeps its vertices in registers: only the sums and the AOVs.
+    const std::uint64_t per_pixel = plan.path_trace ? 0 : pixels;
+    const std::uint64_t slots = per_pixel * kMaxDiffuseVertices;
     const AovSet& want = plan.settings.aovs;
     StopWatch watch;
 
     // Only the sums start at zero; the trace pass writes every pixel's emitted light, vertex
     // count and AOVs, and the later passes read only the vertex slots it filled.
     auto accum = dev.template array<glm::vec3>(pixels);
-    auto emitted = dev.template scratch<glm::vec3>(pixels);
-    auto vertex_count = dev.template scratch<std::uint32_t>(pixels);
+    auto emitted = dev.template scratch<glm::vec3>(per_pixel);
+    auto vertex_count = dev.template scratch<std::uint32_t>(per_pixel);
     auto vertices = dev.template scratch<DiffuseVertex>(slots);
     auto gathered = dev.template scratch<glm::vec3>(plan.gather_photons ? slots : 0);
     auto depth = dev.template scratch<float>(want.depth ? pixels : 0);
@@ -52,9 +56,9 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     FrameBuffersView fb;
     fb.width = plan.width;
     fb.height = plan.height;
-    fb.emitted = emitted.data();
-    fb.vertex_count = vertex_count.data();
-    fb.vertices = vertices.data();
+    fb.emitted = plan.path_trace ? nullptr : emitted.data();
+    fb.vertex_count = plan.path_trace ? nullptr : vertex_count.data();
+    fb.vertices = plan.path_trace ? nullptr : vertices.data();
     fb.gathered = plan.gather_photons ? gathered.data() : nullptr;
     fb.accum = accum.data();
     fb.depth = want.depth ? depth.data() : nullptr;
@@ -67,7 +71,14 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     auto report = [&](std::uint32_t sample, int passes_done) {
         if (plan.settings.progress) plan.settings.progress((sample * 3.0 + passes_done) / (3.0 * spp));
     };
-    for (std::uint32_t s = 0; s < spp; ++s) {
+    for (std::uint32_t s = 0; s < spp && plan.path_trace; ++s) {
+        PathPass path{geometry, lights, plan.camera, fb, s, plan.settings.max_depth, plan.settings.max_bounces,
+                      plan.epsilon};
+        dev.launch(pixels, path);
+        times.ray_tracing_ms += watch.lap_ms();
+        report(s, 3);
+    }
+    for (std::uint32_t s = 0; s < spp && !plan.path_trace; ++s) {
         TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
         dev.launch(pixels, trace);
         times.ray_tracing_ms += watch.lap_ms();

@@ -16,7 +16,12 @@ enum class RenderMode : std::uint32_t {
     photons = 0,         // the report's method: all light from the k nearest photons at the first diffuse hit
     direct_photons = 1,  // direct light by shadow rays + indirect (global map, bounce >= 1) + caustics map
     direct = 2,          // direct light only (no photon map needed)
+    path = 3,            // the reference: unbiased path tracing with next-event estimation (no photon map)
 };
+// photons and direct+photons read a photon map; direct and path do not.
+inline bool mode_needs_photons(RenderMode mode) {
+    return mode == RenderMode::photons || mode == RenderMode::direct_photons;
+}
 RenderMode parse_render_mode(std::string_view text);  // throws std::invalid_argument
 const char* render_mode_name(RenderMode mode);
 
@@ -31,6 +36,7 @@ struct RenderSettings {
     bool fixed_radius = false;            // every photon within the search limit instead of the k nearest
     std::uint32_t light_samples = 16;     // shadow rays per diffuse point (lights picked by power)
     std::uint32_t max_depth = 8;          // mirror/glass bounces followed
+    std::uint32_t max_bounces = 0;        // mode path: diffuse vertices per path; 0: unlimited (roulette)
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

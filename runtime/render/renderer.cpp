@@ -15,7 +15,8 @@ RenderMode parse_render_mode(std::string_view text) {
     if (text == "photons") return RenderMode::photons;
     if (text == "direct+photons") return RenderMode::direct_photons;
     if (text == "direct") return RenderMode::direct;
-    throw std::invalid_argument("expected photons, direct+photons or direct, got '" + std::string(text) + "'");
+    if (text == "path") return RenderMode::path;
+    throw std::invalid_argument("expected photons, direct+photons, direct or path, got '" + std::string(text) + "'");
 }
 
 const char* render_mode_name(RenderMode mode) {
@@ -23,6 +24,7 @@ const char* render_mode_name(RenderMode mode) {
         case RenderMode::photons: return "photons";
         case RenderMode::direct_photons: return "direct+photons";
         case RenderMode::direct: return "direct";
+        case RenderMode::path: return "path";
     }
     return "?";
 }
@@ -71,7 +73,8 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, settings.spp);
     plan.epsilon = render_ray_offset(scene_.geometry.info);
     plan.direct_light = settings.mode != RenderMode::photons;
-    plan.gather_photons = settings.mode != RenderMode::direct;
+    plan.path_trace = settings.mode == RenderMode::path;
+    plan.gather_photons = mode_needs_photons(settings.mode);
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");

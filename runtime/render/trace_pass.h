@@ -21,6 +21,22 @@
 
 namespace kdpm {
 
+// The AOVs of a pixel's first hit, written by its first sample (each buffer may be null).
+KDPM_HD KDPM_INLINE void write_first_hit_aovs(const GeometryView& geometry, const FrameBuffersView& frame,
+                                              std::uint32_t sample, std::uint64_t pixel, const Ray& ray,
+                                              const Hit& hit) {
+    if (sample != 0) return;
+    const bool found = hit.found();
+    SurfacePoint s{};
+    if (found) s = surface_at(geometry, ray, hit);
+    if (frame.depth) frame.depth[pixel] = found ? hit.t : std::numeric_limits<float>::infinity();
+    if (frame.normal) frame.normal[pixel] = found ? s.geometric_normal : glm::vec3(0.0f);
+    if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);
+    if (frame.triangle)
+        frame.triangle[pixel] =
+            found ? static_cast<std::int32_t>(geometry.triangles[hit.triangle].source_index) : -1;
+}
+
 struct TracePass {
     GeometryView geometry;
     PinholeCamera camera;
@@ -90,16 +106,7 @@ struct TracePass {
     }
 
     KDPM_HD void write_aovs(std::uint64_t pixel, const Ray& ray, const Hit& hit) const {
-        if (sample != 0) return;
-        const bool found = hit.found();
-        SurfacePoint s{};
-        if (found) s = surface_at(geometry, ray, hit);
-        if (frame.depth) frame.depth[pixel] = found ? hit.t : std::numeric_limits<float>::infinity();
-        if (frame.normal) frame.normal[pixel] = found ? s.geometric_normal : glm::vec3(0.0f);
-        if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);
-        if (frame.triangle)
-            frame.triangle[pixel] =
-                found ? static_cast<std::int32_t>(geometry.triangles[hit.triangle].source_index) : -1;
+        write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit);
     }
 };
 

@@ -9,7 +9,7 @@
 namespace kdpm {
 namespace {
 
-const RenderMode kModes[] = {RenderMode::photons, RenderMode::direct_photons, RenderMode::direct};
+const RenderMode kModes[] = {RenderMode::photons, RenderMode::direct_photons, RenderMode::direct, RenderMode::path};
 const ViewKind kViews[] = {ViewKind::shaded, ViewKind::depth, ViewKind::normal, ViewKind::photon_density};
 const ToneMap kToneMaps[] = {ToneMap::aces, ToneMap::reinhard, ToneMap::none};
 
@@ -76,7 +76,7 @@ PanelActions draw_control_panel(const PanelModel& m) {
 
     if (ImGui::BeginCombo("mode", render_mode_name(o.mode))) {
         for (RenderMode mode : kModes) {
-            const bool usable = m.have_photons || mode == RenderMode::direct;
+            const bool usable = m.have_photons || !mode_needs_photons(mode);
             if (usable && ImGui::Selectable(render_mode_name(mode), mode == o.mode) && mode != o.mode) {
                 o.mode = mode;
                 act.rerender = true;

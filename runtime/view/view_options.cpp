@@ -46,6 +46,7 @@ void ViewOptions::next_mode(bool have_photons) {
         case RenderMode::photons: mode = RenderMode::direct_photons; break;
         case RenderMode::direct_photons: mode = RenderMode::direct; break;
         case RenderMode::direct: mode = RenderMode::photons; break;
+        case RenderMode::path: mode = RenderMode::photons; break;  // path is chosen in the panel
     }
 }
 
@@ -70,7 +71,7 @@ std::string key_help_text() {
     return "W/A/S/D  move   Q/E  down/up   shift  faster\n"
            "drag     look   R    reset to the file's camera\n"
            "[ ]      halve/double k (2..256)\n"
-           "M        mode: photons / direct+photons / direct\n"
+           "M        mode: photons / direct+photons / direct (path: in the panel)\n"
            "V        view: shaded / depth / normal / photon density\n"
            "+ -      exposure   T  tone mapper\n"
            "F12      screenshot (PNG in the working folder)\n"

@@ -29,7 +29,8 @@ struct ViewOptions {
 
     void halve_k();
     void double_k();
-    // photons -> direct+photons -> direct -> photons; without a photon map only direct.
+    // photons -> direct+photons -> direct -> photons; without a photon map only direct. Path
+    // (the slow reference) is left out of the key's cycle; the panel's combo selects it.
     void next_mode(bool have_photons);
     // shaded -> depth -> normal -> photon density (only with a photon map) -> shaded.
     void next_view(bool have_photons);

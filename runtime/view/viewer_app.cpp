@@ -378,7 +378,7 @@ int run_viewer(const ViewerConfig& cfg) {
     std::optional<std::filesystem::path> photons;
     if (!cfg.photon_path.empty()) photons = cfg.photon_path;
     LoadedScene scene = LoadedScene::load(cfg.geometry_path, photons);
-    if (cfg.mode && *cfg.mode != RenderMode::direct && scene.views().photons.empty())
+    if (cfg.mode && mode_needs_photons(*cfg.mode) && scene.views().photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(*cfg.mode) +
                                  " needs a photon map (.kdp); give one or use --mode direct");
     if (cfg.view == ViewKind::photon_density && scene.views().photons.empty())

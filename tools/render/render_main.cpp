@@ -43,7 +43,7 @@ AovSet parse_aovs(const std::string& text) {
 int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
-    int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, threads = 0;
+    int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, max_bounces = 0, threads = 0;
     double exposure = 0.0, max_radius = -1.0, disc = 0.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
@@ -75,11 +75,15 @@ int run(int argc, char** argv) {
         .option("disc", &disc, "F",
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
-        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, or direct",
+        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, or path (the "
+                "path-traced reference; no photon map needed)",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
         .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
                 4096)
         .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
+        .option("max-bounces", &max_bounces, "N",
+                "mode path: diffuse bounces shaded per path, 1 = direct light only (default 0: unlimited, "
+                "ended by Russian roulette)", 0, 1000000)
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
@@ -121,6 +125,7 @@ int run(int argc, char** argv) {
     settings.disc_flatten = static_cast<float>(disc);
     settings.light_samples = static_cast<std::uint32_t>(light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
+    settings.max_bounces = static_cast<std::uint32_t>(max_bounces);
     settings.post.exposure_stops = static_cast<float>(exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };

@@ -25,8 +25,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     if (const char* dir = std::getenv("KDPM_FUZZ_SEED")) {
         const char* cards[] = {
             R"({"mesh": "m.obj", "up": "z", "photons": 1000, "bounces": 4, "k": 64})",
-            R"({"mesh": "m.obj", "camera": {"eye": [0,1,3.9], "lookat": [0,1,0], "up": [0,1,0], "vfov": 40,)"
-            R"( "width": 64, "height": 48}})",
+            (R"({"mesh": "m.obj", "camera": {"eye": [0,1,3.9], "lookat": [0,1,0], "up": [0,1,0], "vfov": 40,)"
+             R"( "width": 64, "height": 48}})"),
             R"({"mesh": "m.obj", "lights": [{"p0": [0,2,0], "e1": [1,0,0], "e2": [0,0,1], "radiance": [5,5,5]}]})",
         };
         int i = 0;

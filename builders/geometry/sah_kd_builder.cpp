@@ -99,6 +99,9 @@ struct Split {
     int axis = -1;  // -1: make a leaf
     float pos = 0.0f;
     bool planar_left = true;
+    // Exact splits: no triangle goes to that side (an empty-space cut), so the other child is the
+    // node itself, events and all.
+    bool empty_left = false, empty_right = false;
 };
 
 // A subtree in file layout with node and leaf indices relative to its own arrays.
@@ -308,7 +311,8 @@ private:
                     const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
                     if (c.cost < best_cost) {
                         best_cost = c.cost;
-                        best = Split{k, p, c.planar_left};
+                        best = Split{k, p, c.planar_left, nl + (c.planar_left ? planar : 0) == 0,
+                                     nr + (c.planar_left ? 0 : planar) == 0};
                     }
                 }
                 nl += starts + planar;
@@ -328,6 +332,17 @@ private:
     // their (already sorted) events; straddling triangles are clipped to each child cell and
     // their fresh events are sorted and merged in, in the same pass.
     void split_node(NodeInput& in, const Split& s, NodeInput& left, NodeInput& right) const {
+        if (s.empty_left || s.empty_right) {
+            // What the general case below would produce, without touching the events.
+            NodeInput& full = s.empty_left ? right : left;
+            NodeInput& empty = s.empty_left ? left : right;
+            full.tris = std::move(in.tris);
+            for (int a = 0; a < 3; ++a) full.ev[a] = std::move(in.ev[a]);
+            full.cell = empty.cell = in.cell;
+            left.cell.hi[s.axis] = s.pos;
+            right.cell.lo[s.axis] = s.pos;
+            return;
+        }
         enum : std::uint8_t { kBoth = 0, kLeft = 1, kRight = 2 };
         thread_local Scratch scratch;
         const std::size_t n = in.tris.size();

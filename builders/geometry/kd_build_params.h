@@ -21,7 +21,7 @@ struct KdBuildParams {
     float empty_bonus = 0.2f;        // split cost is scaled by (1 - bonus) when one side is empty
     int max_depth = 0;               // 0: automatic, 8 + 1.3 log2(N), capped below kMaxKdTreeDepth
     int leaf_size = 0;               // nodes with at most this many triangles become leaves unsplit
-    KdBuildQuality quality = KdBuildQuality::fast;
+    KdBuildQuality quality = KdBuildQuality::high;
     std::uint32_t exact_below = 4096;  // fast: nodes with fewer triangles use the exact sweep
 };
 

@@ -62,9 +62,9 @@ std::string offline_table(const SceneBenchResult& r, bool md) {
     Table t{{"offline stage", "value"}, {}};
     t.rows.push_back({"triangles", fmt("%llu", (unsigned long long)r.triangles)});
     for (auto [threads, v] : r.geometry_build_ms)
-        t.rows.push_back({fmt("geometry kd-tree build, fast, %d thr (ms)", threads), ms(v)});
-    for (auto [threads, v] : r.geometry_build_high_ms)
         t.rows.push_back({fmt("geometry kd-tree build, high, %d thr (ms)", threads), ms(v)});
+    for (auto [threads, v] : r.geometry_build_fast_ms)
+        t.rows.push_back({fmt("geometry kd-tree build, fast, %d thr (ms)", threads), ms(v)});
     t.rows.push_back({"photons emitted / stored", fmt("%llu / %llu", (unsigned long long)r.photons_emitted,
                                                       (unsigned long long)r.photons_stored)});
     for (auto [threads, v] : r.shoot_ms) t.rows.push_back({fmt("photon shooting, %d thr (ms)", threads), ms(v)});

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
         .option("quality", "fast|high",
                 "fast: binned SAH in large nodes, exact below --exact-below triangles; high: exact SAH sweep "
-                "with perfect splits everywhere (default fast)",
+                "with perfect splits everywhere (default high)",
                 [&](const std::string& v) {
                     const auto q = parse_quality(v);
                     if (!q) throw std::invalid_argument("expected fast or high, got '" + v + "'");

@@ -5,6 +5,7 @@
 #include <sys/resource.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <cstdlib>
 #include <string>
 
@@ -16,6 +17,17 @@
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
+
+namespace {
+
+void build_one_triangle(const std::filesystem::path& kdg) {
+    test::write_file(kdg.parent_path() / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    REQUIRE(test::run_tool("kdpm-build-geometry '" + (kdg.parent_path() / "tri.obj").string() + "' -o '" + kdg.string() +
+                           "' --quiet")
+                .exit_code == 0);
+}
+
+}  // namespace
 
 TEST_CASE("the frame memory estimate covers the buffers and refuses what does not fit", "[hostile][memory]") {
     const std::uint64_t need = frame_memory_bytes(9000, 9000, true, AovSet{});
@@ -29,10 +41,7 @@ TEST_CASE("the frame memory estimate covers the buffers and refuses what does no
 
 TEST_CASE("kdpm-render --width 9000 --height 9000 under a 6 GiB limit says how much it needs", "[hostile][memory]") {
     test::TempDir dir;
-    test::write_file(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    REQUIRE(test::run_tool("kdpm-build-geometry '" + (dir / "tri.obj").string() + "' -o '" + (dir / "s.kdg").string() +
-                           "' --quiet")
-                .exit_code == 0);
+    build_one_triangle(dir / "s.kdg");
     test::CommandResult r{};
     const auto end = test::run_in_child([&] {
         struct rlimit lim{6ull << 30, 6ull << 30};
@@ -55,10 +64,7 @@ TEST_CASE("the viewer counts what it keeps beside the frame, and refuses before 
     // A limit the frame alone fits in but the viewer does not: the old check (the renderer's, at
     // the first frame) would let the window open; without a display that is the error it gave.
     test::TempDir dir;
-    test::write_file(dir / "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-    REQUIRE(test::run_tool("kdpm-build-geometry '" + (dir / "tri.obj").string() + "' -o '" + (dir / "s.kdg").string() +
-                           "' --quiet")
-                .exit_code == 0);
+    build_one_triangle(dir / "s.kdg");
     test::CommandResult r{};
     const auto end = test::run_in_child([&] {
         const rlim_t limit = (frame + viewer) / 2;

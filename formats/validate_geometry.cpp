@@ -13,6 +13,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/scene_limits.h"
 #include "formats/section_ids.h"
+#include "formats/repeated_triangles.h"
 #include "formats/triangle_clip.h"
 #include "formats/validate_kinds.h"
 
@@ -146,7 +147,7 @@ void check_indices(const ContainerReader& file, const TreeArrays& t, std::span<c
     }
 }
 
-// Every usable triangle that overlaps the inside of a leaf cell (the cell shrunk by a small
+// Every usable triangle (but exact copies of an earlier one) that overlaps the inside of a leaf cell (the cell shrunk by a small
 // epsilon, so triangles merely touching a face need not be listed) is listed in that leaf.
 void check_coverage(const ContainerReader& file, const GeometryInfo& info, const TreeArrays& t) {
     float extent = 0.0f;
@@ -161,9 +162,10 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
     AxisBox root;
     for (int a = 0; a < 3; ++a) root.lo[a] = info.bounds_min[a], root.hi[a] = info.bounds_max[a];
     std::vector<WalkEntry> stack;
+    const std::vector<bool> repeated = repeated_triangles(t.tris);
     for (std::uint32_t ti = 0; ti < t.tris.size(); ++ti) {
         const TriangleRecord& tri = t.tris[ti];
-        if (!triangle_is_usable(tri)) continue;
+        if (!triangle_is_usable(tri) || repeated[ti]) continue;
         double v[3][3];
         triangle_vertices(tri, v);
         const AxisBox bounds = triangle_bounds(tri);

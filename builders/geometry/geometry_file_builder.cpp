@@ -32,7 +32,7 @@ GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& param
     check_scene_extent(scene);
     const KdTree tree = build_sah_kd_tree(scene.triangles, params, progress);
     // assemble_geometry_file frames a camera when the scene has none.
-    return GeometryBuild{assemble_geometry_file(scene, tree, params), tree.stats};
+    return GeometryBuild{assemble_geometry_file(scene, tree, params), tree.stats, tree.repeated_triangles};
 }
 
 ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, const KdBuildParams& params) {
@@ -78,6 +78,7 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     meta.statistics["sah_cost"] = s.sah_cost;
     meta.statistics["materials"] = static_cast<double>(scene->materials.size());
     meta.statistics["lights"] = static_cast<double>(scene->lights.size());
+    if (tree.repeated_triangles > 0) meta.statistics["repeated_triangles"] = static_cast<double>(tree.repeated_triangles);
 
     ContainerWriter w(FileKind::geometry);
     w.set_metadata(meta);

@@ -13,6 +13,7 @@ namespace kdpm {
 struct GeometryBuild {
     ContainerWriter writer;  // the complete file: writer.write(path) or writer.bytes()
     KdTreeStats stats;
+    std::uint64_t repeated_triangles = 0;  // exact copies left out of the tree (repeated_triangles.h)
 };
 
 // Builds the tree over scene.triangles and assembles every section; the scene needs a camera

@@ -4,12 +4,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "builders/geometry/mesh_nesting.h"
 #include "builders/geometry/scene_import.h"
 #include "formats/format_error.h"
 
@@ -87,7 +90,7 @@ bool write_all(int fd, const std::string& data) {
 
 }  // namespace
 
-Scene import_mesh_isolated(const std::filesystem::path& path) {
+Scene run_isolated(const std::function<Scene()>& import, const std::string& what, unsigned time_limit_s) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw FormatError("cannot start the mesh importer: " + std::string(std::strerror(errno)));
     const pid_t pid = ::fork();
@@ -100,9 +103,13 @@ Scene import_mesh_isolated(const std::filesystem::path& path) {
         ::close(fds[0]);
         // Assimp prints its assertion messages; the parent reports the failure in one line.
         if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, 2);
+        // A crash ends the child plainly: handlers inherited from the parent (a sanitizer's, a
+        // fuzzer's) would report it as the parent's own.
+        for (const int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGALRM}) ::signal(sig, SIG_DFL);
+        if (time_limit_s > 0) ::alarm(time_limit_s);
         std::string reply;
         try {
-            reply = encode(import_mesh(path));
+            reply = encode(import());
         } catch (const std::exception& e) {
             reply.assign(1, '\1');
             reply.append(e.what());
@@ -122,12 +129,27 @@ Scene import_mesh_isolated(const std::filesystem::path& path) {
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+    if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+        throw FormatError(what + ": cannot read mesh: the importer took longer than " + std::to_string(time_limit_s) + " s");
     if (WIFSIGNALED(status))
-        throw FormatError(path.string() + ": cannot read mesh: the importer crashed (" + ::strsignal(WTERMSIG(status)) + ")");
+        throw FormatError(what + ": cannot read mesh: the importer crashed (" + ::strsignal(WTERMSIG(status)) + ")");
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || reply.empty())
-        throw FormatError(path.string() + ": cannot read mesh: the importer failed");
+        throw FormatError(what + ": cannot read mesh: the importer failed");
     if (reply[0] == '\1') throw FormatError(reply.substr(1));
     return decode(reply);
+}
+
+Scene import_mesh_isolated(const std::filesystem::path& path) {
+    return run_isolated([&] { return import_mesh(path); }, path.string(), 0);
+}
+
+Scene import_mesh_from_memory_isolated(std::string_view bytes, const std::string& extension, const std::string& name,
+                                       unsigned time_limit_s) {
+    // kdpm's own checks run here, in the caller's process; only Assimp and what reads its
+    // result run in the child.
+    if (bytes.empty()) throw FormatError(name + ": the mesh file is empty");
+    check_mesh_nesting(bytes, extension, name);
+    return run_isolated([&] { return import_mesh_from_memory(bytes, extension, name); }, name, time_limit_s);
 }
 
 }  // namespace kdpm

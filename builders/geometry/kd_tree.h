@@ -26,10 +26,11 @@ struct KdTree {
     std::vector<KdNode> nodes;             // depth first, node 0 the root
     std::vector<std::uint32_t> leaf_indices;
     KdTreeStats stats;
+    std::uint64_t repeated_triangles = 0;  // exact copies of an earlier triangle, left out
 };
 
-// Beyond this many triangles in one leaf (copies of one triangle, or many overlapping ones that
-// no split separates) every ray through the leaf tests them all: the build warns.
+// Beyond this many triangles in one leaf (many overlapping ones that no split separates; exact
+// copies are left out of the tree) every ray through the leaf tests them all: the build warns.
 inline constexpr std::uint32_t kLargeLeafTriangles = 1024;
 
 // Walks a tree in file layout and measures it (used by the builder and by tests).

@@ -14,6 +14,7 @@
 
 #include "builders/geometry/binned_split.h"
 #include "builders/geometry/sah_cost.h"
+#include "formats/repeated_triangles.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {
@@ -130,8 +131,11 @@ public:
     KdTree build() {
         KdTree tree;
         NodeInput root;
-        for (std::uint32_t i = 0; i < tris_.size(); ++i)
-            if (triangle_is_usable(tris_[i])) root.tris.push_back(i);
+        const std::vector<bool> repeated = repeated_triangles(tris_);
+        for (std::uint32_t i = 0; i < tris_.size(); ++i) {
+            if (repeated[i]) ++tree.repeated_triangles;
+            else if (triangle_is_usable(tris_[i])) root.tris.push_back(i);
+        }
         if (root.tris.size() > kLocalMask) throw std::runtime_error("too many triangles for one kd-tree");
         max_depth_ = effective_max_depth(params_, root.tris.size());
 

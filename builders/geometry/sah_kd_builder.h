@@ -16,8 +16,8 @@
 
 namespace kdpm {
 
-// Triangles that are not usable (zero area, non-finite) are left out of the tree; the others
-// keep their index. `progress` (optional) receives a rough fraction done, from any thread.
+// Triangles that are not usable (zero area, non-finite) or repeat an earlier one exactly
+// (repeated_triangles.h) are left out of the tree; the others keep their index. `progress` (optional) receives a rough fraction done, from any thread.
 KdTree build_sah_kd_tree(std::span<const TriangleRecord> triangles, const KdBuildParams& params,
                          const std::function<void(double)>& progress = {});
 

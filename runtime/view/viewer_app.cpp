@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "runtime/render/frame_memory.h"
 #include "runtime/render/image_output.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
@@ -24,6 +25,7 @@
 #include "runtime/view/render_worker.h"
 #include "runtime/view/screenshot_name.h"
 #include "runtime/view/viewer_config.h"
+#include "runtime/view/viewer_memory.h"
 
 namespace kdpm {
 
@@ -386,6 +388,7 @@ int run_viewer(const ViewerConfig& cfg) {
     const CameraRecord start_camera = cfg.camera.applied_to(scene.views().camera);
     std::uint32_t w = 0, h = 0;
     image_size(cfg, start_camera, w, h);
+    check_frame_memory(w, h, viewer_memory_bytes(w, h, !scene.views().photons.empty()), available_memory_bytes());
     GlWindow window(static_cast<int>(w), static_cast<int>(h), "kdpm-view");
     BackendSelection selected = select_backend(cfg.backend);
     if (!selected.notice.empty() && !cfg.quiet) std::fprintf(stderr, "kdpm-view: %s\n", selected.notice.c_str());

@@ -71,6 +71,11 @@ TEST_CASE("a single triangle and exact duplicates", "[geometry][degenerate]") {
     auto tris = test::random_soup(300, 20);
     auto twice = tris;
     twice.insert(twice.end(), tris.begin(), tris.end());
+    // The copies differ in source index only: the tree holds the first of each.
+    for (std::size_t i = 300; i < twice.size(); ++i) twice[i].source_index = static_cast<std::uint32_t>(i);
+    const KdTree tree = build_sah_kd_tree(twice, params);
+    CHECK(tree.repeated_triangles == 300);
+    for (std::uint32_t i : tree.leaf_indices) CHECK(i < 300);
     test::check_triangles(twice, test::random_rays(10000, 21), params);
 }
 

@@ -3,6 +3,7 @@
 // bound is a candidate and the triangles on each side are counted by looping over all of them.
 // Same candidates, cost function, tie rules and perfect-split clipping as the real builder, so
 // both must reach the same tree and SAH cost.
+#include <cstring>
 #include <algorithm>
 #include <cmath>
 #include <span>
@@ -21,8 +22,17 @@ public:
 
     KdTree build() {
         std::vector<std::uint32_t> ids;
-        for (std::uint32_t i = 0; i < tris_.size(); ++i)
-            if (triangle_is_usable(tris_[i])) ids.push_back(i);
+        // Usable triangles that are not an exact copy of an earlier one (compared pairwise here).
+        auto same = [](const TriangleRecord& a, const TriangleRecord& b) {
+            return std::memcmp(a.v0, b.v0, sizeof a.v0) == 0 && std::memcmp(a.e1, b.e1, sizeof a.e1) == 0 &&
+                   std::memcmp(a.e2, b.e2, sizeof a.e2) == 0;
+        };
+        for (std::uint32_t i = 0; i < tris_.size(); ++i) {
+            if (!triangle_is_usable(tris_[i])) continue;
+            bool copy = false;
+            for (std::uint32_t j : ids) copy = copy || same(tris_[i], tris_[j]);
+            if (!copy) ids.push_back(i);
+        }
         max_depth_ = effective_max_depth(params_, ids.size());
         AxisBox bounds{{0, 0, 0}, {0, 0, 0}};
         if (!ids.empty()) {

@@ -3,10 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <functional>
 
 #include <string>
 
+#include "builders/geometry/isolated_import.h"
 #include "builders/geometry/mesh_nesting.h"
+#include "formats/format_error.h"
 #include "tests/hostile/hostile_files.h"
 #include "tests/support/temp_dir.h"
 
@@ -97,4 +103,32 @@ TEST_CASE("a mesh on which Assimp aborts is an error of the tool, not its end", 
     const auto r = build(dir / "abort.off", dir);
     CHECK(test::is_clean_error(r));
     CHECK_THAT(r.output, Catch::Contains("cannot read mesh"));
+}
+
+TEST_CASE("the isolated importer turns a child's crash, hang or error into one line", "[hostile][mesh]") {
+    auto message = [](const std::function<Scene()>& import) {
+        try {
+            (void)run_isolated(import, "m.obj", 1);
+        } catch (const FormatError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK(message([]() -> Scene { std::raise(SIGSEGV); return {}; }) == "m.obj: cannot read mesh: the importer crashed (Segmentation fault)");
+    CHECK(message([]() -> Scene { for (;;) ::pause(); }) == "m.obj: cannot read mesh: the importer took longer than 1 s");
+    CHECK(message([]() -> Scene { throw FormatError("m.obj: no faces"); }) == "m.obj: no faces");
+    Scene one;
+    one.source_name = "m.obj";
+    one.triangles.resize(3);
+    one.triangles[1].v0[0] = 7.0f;
+    const Scene back = run_isolated([&] { return one; }, "m.obj", 1);
+    REQUIRE(back.triangles.size() == 3);
+    CHECK(back.triangles[1].v0[0] == 7.0f);
+    CHECK(back.source_name == "m.obj");
+}
+
+TEST_CASE("a mesh in memory on which Assimp aborts is an error, the caller lives on", "[hostile][mesh]") {
+    const std::string off("OFF\n3 1 0\n\n0  00 00  \0v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n1 2\n", 74);
+    CHECK_THROWS_WITH(import_mesh_from_memory_isolated(off, "off", "abort.off", 10), Catch::Contains("abort.off: cannot read mesh"));
+    CHECK_THROWS_WITH(import_mesh_from_memory_isolated("", "off", "empty.off", 10), "empty.off: the mesh file is empty");
 }

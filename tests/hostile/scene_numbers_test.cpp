@@ -146,16 +146,28 @@ TEST_CASE("garbage metadata gets a reason, not a parser assertion", "[hostile][n
     CHECK_THAT(r.output, !Catch::Contains("assertion"));
 }
 
-TEST_CASE("thousands of copies of one triangle build a bounded tree with a warning", "[hostile][numbers]") {
+TEST_CASE("copies of one triangle are held once in the tree, with a warning", "[hostile][numbers]") {
     test::TempDir dir;
-    std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    for (int i = 0; i < 3000; ++i) obj += "f 1 2 3\n";
+    // 200,000 copies of one triangle beside a second one: before, one leaf held every copy and
+    // each ray through it tested them all.
+    std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 2 2\nv 3 2 2\nv 2 3 2\nf 4 5 6\n";
+    obj.reserve(obj.size() + 200000 * 8);
+    for (int i = 0; i < 200000; ++i) obj += "f 1 2 3\n";
     test::write_file(dir / "copies.obj", obj);
     const auto r = test::run_tool("kdpm-build-geometry '" + (dir / "copies.obj").string() + "' -o '" +
                                   (dir / "out.kdg").string() + "'");
     CHECK(r.exit_code == 0);
-    CHECK_THAT(r.output, Catch::Contains("warning: a leaf holds 3000 triangles"));
+    CHECK_THAT(r.output, Catch::Contains("warning: 199999 triangles are exact copies of earlier ones"));
+    CHECK_THAT(r.output, !Catch::Contains("a leaf holds"));
     CHECK(validate(dir / "out.kdg").exit_code == 0);
+    const auto inspect = test::run_tool("kdpm-inspect --json '" + (dir / "out.kdg").string() + "'");
+    REQUIRE(inspect.exit_code == 0);
+    rapidjson::Document doc;
+    doc.Parse(inspect.output.c_str());
+    REQUIRE_FALSE(doc.HasParseError());
+    const auto& stats = doc["metadata"]["kdpm"]["statistics"];
+    CHECK(stats["repeated_triangles"].GetDouble() == 199999.0);
+    CHECK(stats["leaf_references"].GetDouble() <= 2.0);
 }
 
 TEST_CASE("metadata with a NaN statistic is still valid JSON (kdpm-inspect --json)", "[hostile][numbers]") {

@@ -101,9 +101,16 @@ NodeName=localhost NodeAddr=127.0.0.1 CPUs=$CPUS RealMemory=$MEMORY State=UNKNOW
 PartitionName=kdpm Nodes=localhost Default=YES MaxTime=INFINITE State=UP
 CONF
 
-daemon slurmctld -D -i > "$WORK/logs/slurmctld.out" 2>&1
+# The daemons find themselves in slurm.conf by the machine's name, and bind to what it resolves to.
+# In a UTS namespace of their own that name is "localhost", whatever this machine is called and
+# whether or not its name resolves (a debootstrapped root has no /etc/hosts entry for it).
+as_localhost=()
+if unshare --uts true 2>/dev/null; then
+  as_localhost=(unshare --uts bash -c 'echo localhost > /proc/sys/kernel/hostname && exec "$@"' as_localhost)
+fi
+daemon "${as_localhost[@]}" slurmctld -D -i > "$WORK/logs/slurmctld.out" 2>&1
 wait_for 20 scontrol ping || skip "slurmctld does not start ($(tail -n 1 "$WORK/logs/slurmctld.log" 2>/dev/null))"
-daemon slurmd -D -N localhost > "$WORK/logs/slurmd.out" 2>&1
+daemon "${as_localhost[@]}" slurmd -D -N localhost > "$WORK/logs/slurmd.out" 2>&1
 node_idle() { [ "$(sinfo -h -n localhost -o %T 2>/dev/null)" = idle ]; }
 wait_for 30 node_idle || skip "slurmd does not join ($(tail -n 1 "$WORK/logs/slurmd.log" 2>/dev/null))"
 # The daemons listen on the loopback address only (NoInAddrAny, NoCtldInAddrAny).

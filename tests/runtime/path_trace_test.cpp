@@ -9,7 +9,6 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "runtime/backend/thread_limit.h"
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"
 #include "tests/runtime/hand_built_scene.h"
@@ -121,21 +120,6 @@ TEST_CASE("path tracing a mirror and a glass slab matches their closed forms", "
         INFO("mean " << mean << ", expected " << expected);
         CHECK(mean == Approx(expected).epsilon(0.01));
     }
-}
-
-TEST_CASE("path-traced images are identical with 1 and 2 threads", "[render][path][determinism]") {
-    test::BuiltScene scene(800, 3, 48, 32);
-    RenderSettings settings;
-    settings.mode = RenderMode::path;
-    settings.spp = 2;
-    auto render_with = [&](int threads) {
-        ThreadLimit limit(threads);
-        Renderer renderer(scene.views, BackendKind::cpu);
-        return renderer.render(settings);
-    };
-    RenderResult one = render_with(1), two = render_with(2);
-    CHECK(one.linear.rgb == two.linear.rgb);
-    CHECK(mean_of(one.linear) > 0.0);
 }
 
 TEST_CASE("the Cornell box path-traced agrees with direct light at one bounce and with direct+photons at the "

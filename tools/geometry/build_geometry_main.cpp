@@ -68,10 +68,15 @@ int main(int argc, char** argv) {
         }();
         const auto built = std::chrono::steady_clock::now();
         build.writer.write(output);
+        if (!quiet && build.repeated_triangles > 0)
+            std::fprintf(stderr,
+                         "kdpm-build-geometry: warning: %llu triangles are exact copies of earlier ones; the tree holds "
+                         "the first copy only\n",
+                         static_cast<unsigned long long>(build.repeated_triangles));
         if (!quiet && build.stats.max_leaf_triangles > kLargeLeafTriangles)
             std::fprintf(stderr,
-                         "kdpm-build-geometry: warning: a leaf holds %u triangles (duplicate or overlapping triangles "
-                         "that no split separates); rays through it will be slow\n",
+                         "kdpm-build-geometry: warning: a leaf holds %u triangles (overlapping triangles that no split "
+                         "separates); rays through it will be slow\n",
                          build.stats.max_leaf_triangles);
         if (!quiet) {
             const KdTreeStats& s = build.stats;

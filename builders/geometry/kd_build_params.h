@@ -2,8 +2,18 @@
 // Parameters of the SAH geometry kd-tree build (Wald & Havran 2006), with the defaults used by
 // kdpm-build-geometry. All of them are recorded in the file's metadata.
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 namespace kdpm {
+
+// high: the exact O(N log N) sweep with perfect splits in every node.
+// fast: binned SAH (Shevtsov et al. 2007; Hunt et al. 2006) in nodes of at least `exact_below`
+// triangles, binned in parallel inside the node; the exact sweep below that size.
+enum class KdBuildQuality : std::uint8_t { high, fast };
+
+std::string_view quality_name(KdBuildQuality q);
+std::optional<KdBuildQuality> parse_quality(std::string_view name);
 
 struct KdBuildParams {
     float traversal_cost = 1.0f;     // K_T: cost of stepping through one inner node
@@ -11,6 +21,8 @@ struct KdBuildParams {
     float empty_bonus = 0.2f;        // split cost is scaled by (1 - bonus) when one side is empty
     int max_depth = 0;               // 0: automatic, 8 + 1.3 log2(N), capped below kMaxKdTreeDepth
     int leaf_size = 0;               // nodes with at most this many triangles become leaves unsplit
+    KdBuildQuality quality = KdBuildQuality::high;
+    std::uint32_t exact_below = 4096;  // fast: nodes with fewer triangles use the exact sweep
 };
 
 // The depth limit the build uses for `triangles` triangles.

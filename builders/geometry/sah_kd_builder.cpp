@@ -8,8 +8,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#include "builders/geometry/binned_split.h"
 #include "builders/geometry/sah_cost.h"
 #include "formats/repeated_triangles.h"
 #include "formats/triangle_clip.h"
@@ -21,6 +24,14 @@ std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t tri
     if (params.max_depth > 0) return std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
     const double automatic = 8.0 + 1.3 * std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
     return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), cap);
+}
+
+std::string_view quality_name(KdBuildQuality q) { return q == KdBuildQuality::fast ? "fast" : "high"; }
+
+std::optional<KdBuildQuality> parse_quality(std::string_view name) {
+    if (name == "high") return KdBuildQuality::high;
+    if (name == "fast") return KdBuildQuality::fast;
+    return std::nullopt;
 }
 
 namespace {
@@ -70,13 +81,18 @@ inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event>
     }
 }
 
+// A node is either exact (sorted events) or, in the upper levels of a fast build, binned (each
+// triangle's bounds clipped to the cell, no events).
 struct NodeInput {
     AxisBox cell{};
     std::vector<std::uint32_t> tris;  // global triangle indices, ascending
-    std::vector<Event> ev[3];         // sorted, per axis
+    std::vector<Event> ev[3];         // exact: sorted, per axis
+    bool binned = false;
+    std::vector<AxisBox> boxes;       // binned: clipped bounds, parallel to tris
     void release() {
         std::vector<std::uint32_t>().swap(tris);
         for (auto& e : ev) std::vector<Event>().swap(e);
+        std::vector<AxisBox>().swap(boxes);
     }
 };
 
@@ -84,6 +100,9 @@ struct Split {
     int axis = -1;  // -1: make a leaf
     float pos = 0.0f;
     bool planar_left = true;
+    // Exact splits: no triangle goes to that side (an empty-space cut), so the other child is the
+    // node itself, events and all.
+    bool empty_left = false, empty_right = false;
 };
 
 // A subtree in file layout with node and leaf indices relative to its own arrays.
@@ -131,6 +150,23 @@ public:
         }
         root.cell = bounds;
         root_volume_ = volume(bounds);
+        if (params_.quality == KdBuildQuality::fast) {
+            start_binned(root);
+        } else {
+            start_exact(root);
+        }
+
+        std::unique_ptr<Piece> piece = build_piece(std::move(root), 0);
+        tree.bounds = bounds;
+        emit(*piece, tree.nodes, tree.leaf_indices);
+        tree.stats = measure_kd_tree(tree.nodes, bounds, params_);
+        if (progress_) progress_(1.0);
+        return tree;
+    }
+
+private:
+    void start_exact(NodeInput& root) const {
+        const AxisBox& bounds = root.cell;
         for (auto& e : root.ev) e.reserve(2 * root.tris.size());
         std::vector<std::uint32_t> kept;
         kept.reserve(root.tris.size());
@@ -146,16 +182,108 @@ public:
         tbb::parallel_invoke([&] { std::sort(root.ev[0].begin(), root.ev[0].end()); },
                              [&] { std::sort(root.ev[1].begin(), root.ev[1].end()); },
                              [&] { std::sort(root.ev[2].begin(), root.ev[2].end()); });
-
-        std::unique_ptr<Piece> piece = build_piece(std::move(root), 0);
-        tree.bounds = bounds;
-        emit(*piece, tree.nodes, tree.leaf_indices);
-        tree.stats = measure_kd_tree(tree.nodes, bounds, params_);
-        if (progress_) progress_(1.0);
-        return tree;
     }
 
-private:
+    // Clips every usable triangle to the root cell in parallel; the list stays ascending.
+    void start_binned(NodeInput& root) const {
+        const std::size_t n = root.tris.size();
+        std::vector<AxisBox> boxes(n);
+        std::vector<std::uint8_t> keep(n);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                double v[3][3];
+                triangle_vertices(tris_[root.tris[i]], v);
+                keep[i] = clip_triangle_to_box(v, root.cell, boxes[i]);
+            }
+        });
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (keep[i]) root.tris[m] = root.tris[i], boxes[m] = boxes[i], ++m;
+        root.tris.resize(m);
+        boxes.resize(m);
+        root.boxes = std::move(boxes);
+        root.binned = true;
+    }
+
+    // Leaves binned mode: events from the clipped bounds, sorted, as the exact build keeps them.
+    static void to_exact(NodeInput& in) {
+        if (!in.binned) return;
+        for (auto& e : in.ev) e.reserve(2 * in.tris.size());
+        for (std::size_t i = 0; i < in.boxes.size(); ++i) add_events(in.boxes[i], static_cast<std::uint32_t>(i), in.ev);
+        for (auto& e : in.ev) std::sort(e.begin(), e.end());
+        std::vector<AxisBox>().swap(in.boxes);
+        in.binned = false;
+    }
+
+    bool wants_binning(const NodeInput& in, std::uint32_t depth) const {
+        const std::size_t n = in.tris.size();
+        return in.binned && n >= params_.exact_below && n > static_cast<std::size_t>(std::max(params_.leaf_size, 0)) &&
+               depth < max_depth_;
+    }
+
+    // Distributes a binned node's triangles to its children in fixed chunks that run in parallel:
+    // the same sides as split_node, straddling triangles clipped to each child cell, both lists
+    // kept in ascending order.
+    void split_binned(const NodeInput& in, const BinnedSplit& s, NodeInput& left, NodeInput& right) const {
+        constexpr std::uint8_t kInLeft = 1, kInRight = 2;
+        constexpr std::size_t kChunk = 4096;
+        const std::size_t n = in.tris.size();
+        const int k = s.axis;
+        const float p = s.pos;
+        left.cell = in.cell;
+        right.cell = in.cell;
+        left.cell.hi[k] = p;
+        right.cell.lo[k] = p;
+        left.binned = right.binned = true;
+        std::vector<std::uint8_t> side(n);
+        std::vector<AxisBox> lbox(n), rbox(n);
+        const std::size_t chunks = (n + kChunk - 1) / kChunk;
+        std::vector<std::size_t> lcount(chunks + 1, 0), rcount(chunks + 1, 0);
+        auto each_chunk = [&](auto&& body) {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+                for (std::size_t c = r.begin(); c != r.end(); ++c) body(c, c * kChunk, std::min(n, (c + 1) * kChunk));
+            });
+        };
+        each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
+            std::size_t nl = 0, nr = 0;
+            for (std::size_t i = begin; i < end; ++i) {
+                const AxisBox& b = in.boxes[i];
+                std::uint8_t sd = 0;
+                if (b.lo[k] == b.hi[k]) {
+                    sd = (b.lo[k] < p || (b.lo[k] == p && s.planar_left)) ? kInLeft : kInRight;
+                } else if (b.hi[k] <= p) {
+                    sd = kInLeft;
+                } else if (b.lo[k] >= p) {
+                    sd = kInRight;
+                } else {
+                    double v[3][3];
+                    triangle_vertices(tris_[in.tris[i]], v);
+                    if (clip_triangle_to_box(v, left.cell, lbox[i])) sd |= kInLeft;
+                    if (clip_triangle_to_box(v, right.cell, rbox[i])) sd |= kInRight;
+                }
+                if (sd == kInLeft) lbox[i] = b;
+                if (sd == kInRight) rbox[i] = b;
+                side[i] = sd;
+                nl += (sd & kInLeft) != 0;
+                nr += (sd & kInRight) != 0;
+            }
+            lcount[c + 1] = nl;
+            rcount[c + 1] = nr;
+        });
+        for (std::size_t c = 0; c < chunks; ++c) lcount[c + 1] += lcount[c], rcount[c + 1] += rcount[c];
+        left.tris.resize(lcount[chunks]);
+        left.boxes.resize(lcount[chunks]);
+        right.tris.resize(rcount[chunks]);
+        right.boxes.resize(rcount[chunks]);
+        each_chunk([&](std::size_t c, std::size_t begin, std::size_t end) {
+            std::size_t il = lcount[c], ir = rcount[c];
+            for (std::size_t i = begin; i < end; ++i) {
+                if (side[i] & kInLeft) left.tris[il] = in.tris[i], left.boxes[il++] = lbox[i];
+                if (side[i] & kInRight) right.tris[ir] = in.tris[i], right.boxes[ir++] = rbox[i];
+            }
+        });
+    }
+
     static double volume(const AxisBox& b) {
         return static_cast<double>(b.hi[0] - b.lo[0]) * (b.hi[1] - b.lo[1]) * (b.hi[2] - b.lo[2]);
     }
@@ -187,7 +315,8 @@ private:
                     const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
                     if (c.cost < best_cost) {
                         best_cost = c.cost;
-                        best = Split{k, p, c.planar_left};
+                        best = Split{k, p, c.planar_left, nl + (c.planar_left ? planar : 0) == 0,
+                                     nr + (c.planar_left ? 0 : planar) == 0};
                     }
                 }
                 nl += starts + planar;
@@ -207,6 +336,17 @@ private:
     // their (already sorted) events; straddling triangles are clipped to each child cell and
     // their fresh events are sorted and merged in, in the same pass.
     void split_node(NodeInput& in, const Split& s, NodeInput& left, NodeInput& right) const {
+        if (s.empty_left || s.empty_right) {
+            // What the general case below would produce, without touching the events.
+            NodeInput& full = s.empty_left ? right : left;
+            NodeInput& empty = s.empty_left ? left : right;
+            full.tris = std::move(in.tris);
+            for (int a = 0; a < 3; ++a) full.ev[a] = std::move(in.ev[a]);
+            full.cell = empty.cell = in.cell;
+            left.cell.hi[s.axis] = s.pos;
+            right.cell.lo[s.axis] = s.pos;
+            return;
+        }
         enum : std::uint8_t { kBoth = 0, kLeft = 1, kRight = 2 };
         thread_local Scratch scratch;
         const std::size_t n = in.tris.size();
@@ -296,6 +436,20 @@ private:
 
     std::unique_ptr<Piece> build_piece(NodeInput&& in, std::uint32_t depth) {
         auto piece = std::make_unique<Piece>();
+        if (wants_binning(in, depth)) {
+            const BinnedSplit s = find_binned_split(in.boxes, in.cell, params_);
+            if (s.axis >= 0) {
+                NodeInput left, right;
+                split_binned(in, s, left, right);
+                in.release();
+                piece->is_split = true;
+                piece->split = Split{s.axis, s.pos, s.planar_left};
+                tbb::parallel_invoke([&] { piece->below = build_piece(std::move(left), depth + 1); },
+                                     [&] { piece->above = build_piece(std::move(right), depth + 1); });
+                return piece;
+            }
+        }
+        to_exact(in);
         if (in.tris.size() > kParallelThreshold) {
             const Split s = find_split(in, depth);
             if (s.axis >= 0) {

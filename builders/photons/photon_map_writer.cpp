@@ -3,16 +3,21 @@
 #include <string>
 #include <vector>
 
+#include <tbb/parallel_invoke.h>
+
 #include "builders/photons/photon_tree_writer.h"
 
 namespace kdpm {
 
 PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOptions& options, Metadata metadata) {
-    BuiltPhotonTree global = build_photon_tree(set.hits, options, set.info.emitted_count, set.info.max_bounces);
     std::vector<PhotonHit> caustic_hits;
     for (const auto& h : set.hits)
         if (h.flags & kPhotonCaustic) caustic_hits.push_back(h);
-    BuiltPhotonTree caustic = build_photon_tree(caustic_hits, options, set.info.emitted_count, set.info.max_bounces);
+    // The two trees are independent: built side by side.
+    BuiltPhotonTree global, caustic;
+    tbb::parallel_invoke(
+        [&] { global = build_photon_tree(set.hits, options, set.info.emitted_count, set.info.max_bounces); },
+        [&] { caustic = build_photon_tree(caustic_hits, options, set.info.emitted_count, set.info.max_bounces); });
 
     PhotonMapBuild out;
     add_photon_tree_sections(out.writer, PhotonMapKind::global, global);

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#include "builders/photons/large_node.h"
 #include "builders/photons/median_split.h"
 #include "builders/photons/query_radius.h"
 #include "builders/photons/vvh_split.h"
@@ -31,11 +34,16 @@ struct Builder {
                std::vector<KdNode>& out) const {
         std::uint32_t n = end - begin;
         SplitChoice choice;
+        const bool large = n >= photon_build::kLargeNode;
         if (depth < kMaxPhotonTreeDepth) {
-            choice = options.builder == PhotonTreeBuilder::balanced
-                         ? photon_build::choose_median_split(pos, idx + begin, n, options.leaf_size)
-                         : photon_build::choose_vvh_split(pos, idx + begin, n, cell, options.query_radius,
+            if (options.builder == PhotonTreeBuilder::balanced)
+                choice = photon_build::choose_median_split(pos, idx + begin, n, options.leaf_size);
+            else if (large)
+                choice = photon_build::parallel_vvh_split(pos, idx + begin, n, cell, options.query_radius,
                                                           options.leaf_size);
+            else
+                choice = photon_build::choose_vvh_split(pos, idx + begin, n, cell, options.query_radius,
+                                                        options.leaf_size);
         }
         if (choice.make_leaf) {
             out.push_back(KdNode::leaf(begin, n));
@@ -43,8 +51,10 @@ struct Builder {
         }
         const float* c = pos.axis[choice.axis];
         const float s = choice.position;
-        std::uint32_t* mid_it = std::stable_partition(idx + begin, idx + end, [&](std::uint32_t i) { return c[i] < s; });
-        std::uint32_t mid = static_cast<std::uint32_t>(mid_it - idx);
+        const std::uint32_t mid =
+            large ? begin + photon_build::parallel_stable_partition(pos, idx + begin, n, choice.axis, s)
+                  : static_cast<std::uint32_t>(
+                        std::stable_partition(idx + begin, idx + end, [&](std::uint32_t i) { return c[i] < s; }) - idx);
         Cell below = cell, above = cell;
         below.hi[choice.axis] = s;
         above.lo[choice.axis] = s;
@@ -105,14 +115,16 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
     const auto n = static_cast<std::uint32_t>(hits.size());
     std::vector<float> axis[3];
     for (auto& a : axis) a.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i)
-        for (int a = 0; a < 3; ++a) axis[a][i] = hits[i].position[a];
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 16384), [&](const tbb::blocked_range<std::uint32_t>& r) {
+        for (std::uint32_t i = r.begin(); i != r.end(); ++i)
+            for (int a = 0; a < 3; ++a) axis[a][i] = hits[i].position[a];
+    });
     Positions pos{{axis[0].data(), axis[1].data(), axis[2].data()}};
 
     BuiltPhotonTree t;
     t.source.resize(n);
     for (std::uint32_t i = 0; i < n; ++i) t.source[i] = i;
-    Cell root = photon_build::photon_bounds(pos, t.source.data(), n);
+    Cell root = photon_build::parallel_photon_bounds(pos, t.source.data(), n);
 
     PhotonTreeOptions options = options_in;
     options.leaf_size = std::max<std::uint32_t>(options.leaf_size, 1);
@@ -134,16 +146,18 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
     t.power.resize(n);
     t.directions.resize(n);
     t.flags.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const PhotonHit& h = hits[t.source[i]];
-        t.x[i] = h.position[0];
-        t.y[i] = h.position[1];
-        t.z[i] = h.position[2];
-        t.power[i] = encode_rgbe(h.power[0], h.power[1], h.power[2]);
-        t.directions[i] = {encode_octahedral(h.direction[0], h.direction[1], h.direction[2]),
-                           encode_octahedral(h.normal[0], h.normal[1], h.normal[2])};
-        t.flags[i] = h.flags;
-    }
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 16384), [&](const tbb::blocked_range<std::uint32_t>& r) {
+        for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
+            const PhotonHit& h = hits[t.source[i]];
+            t.x[i] = h.position[0];
+            t.y[i] = h.position[1];
+            t.z[i] = h.position[2];
+            t.power[i] = encode_rgbe(h.power[0], h.power[1], h.power[2]);
+            t.directions[i] = {encode_octahedral(h.direction[0], h.direction[1], h.direction[2]),
+                               encode_octahedral(h.normal[0], h.normal[1], h.normal[2])};
+            t.flags[i] = h.flags;
+        }
+    });
 
     auto& info = t.info;
     for (int a = 0; a < 3; ++a) {

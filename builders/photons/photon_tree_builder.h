@@ -2,7 +2,8 @@
 // Builds a photon kd-tree over photon hits: the VVH tree (default) or the classic balanced
 // median tree, with the photons reordered into leaf order as structure-of-arrays (positions
 // x/y/z, RGBE power, octahedral direction + normal, flags). Deterministic: the result does not
-// depend on the number of threads (subtrees are built independently and joined in order).
+// depend on the number of threads (subtrees are built independently and joined in order, and
+// large nodes bin and partition their photons in fixed chunks: see large_node.h).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -6,7 +6,7 @@
 namespace kdpm::photon_build {
 namespace {
 
-constexpr int kBins = 32;
+constexpr int kBins = kVvhBins;
 
 double grown_volume(const float lo[3], const float hi[3], double r) {
     double v = 1.0;
@@ -16,11 +16,23 @@ double grown_volume(const float lo[3], const float hi[3], double r) {
 
 }  // namespace
 
-SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
-                             float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs) {
+void count_vvh_bins(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& b, VvhBins& counts) {
+    for (int a = 0; a < 3; ++a) {
+        const float lo = b.lo[a], extent = b.hi[a] - b.lo[a];
+        if (!(extent > 0.0f)) continue;
+        const float* c = p.axis[a];
+        const float scale = kBins / extent;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            int bin = static_cast<int>((c[idx[i]] - lo) * scale);
+            counts[a][bin < 0 ? 0 : (bin >= kBins ? kBins - 1 : bin)]++;
+        }
+    }
+}
+
+SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std::uint32_t n, const Cell& cell,
+                                       float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs) {
     SplitChoice best_choice;
     if (n <= 1) return best_choice;
-    const Cell b = photon_bounds(p, idx, n);
     const double r = query_radius;
     const double cell_volume = grown_volume(cell.lo, cell.hi, r);
     if (!(cell_volume > 0.0) || !std::isfinite(cell_volume)) return best_choice;
@@ -47,16 +59,9 @@ SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::
 
         const float lo = b.lo[a], extent = b.hi[a] - b.lo[a];
         if (!(extent > 0.0f)) continue;
-        std::uint32_t counts[kBins] = {};
-        const float* c = p.axis[a];
-        const float scale = kBins / extent;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            int bin = static_cast<int>((c[idx[i]] - lo) * scale);
-            counts[bin < 0 ? 0 : (bin >= kBins ? kBins - 1 : bin)]++;
-        }
         std::uint32_t below = 0;
         for (int i = 1; i < kBins; ++i) {
-            below += counts[i - 1];
+            below += counts[a][i - 1];
             float s = lo + extent * (static_cast<float>(i) / kBins);
             if (s > lo && s <= b.hi[a]) consider(a, s, below, n - below);
         }
@@ -64,6 +69,15 @@ SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::
     const double leaf_cost = static_cast<double>(n) * costs.photon;
     if (!std::isfinite(best) || (n <= max_leaf_size && best >= leaf_cost)) return SplitChoice{};
     return best_choice;
+}
+
+SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
+                             float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs) {
+    if (n <= 1) return SplitChoice{};
+    const Cell b = photon_bounds(p, idx, n);
+    VvhBins counts = {};
+    count_vvh_bins(p, idx, n, b, counts);
+    return choose_vvh_split_from_bins(b, counts, n, cell, query_radius, max_leaf_size, costs);
 }
 
 }  // namespace kdpm::photon_build

@@ -22,4 +22,15 @@ struct VvhCosts {
 SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
                              float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});
 
+// choose_vvh_split in two steps, so that a large node can count its photons in parallel chunks:
+// the photons' bounds `b` (photon_bounds) and their counts in kVvhBins bins per axis over b.
+inline constexpr int kVvhBins = 32;
+using VvhBins = std::uint32_t[3][kVvhBins];
+
+// Adds the photons idx[0..n) to `counts` (axes where b is flat are left alone).
+void count_vvh_bins(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& b, VvhBins& counts);
+
+SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std::uint32_t n, const Cell& cell,
+                                       float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});
+
 }  // namespace kdpm::photon_build

@@ -35,6 +35,15 @@ inline int count_mismatches(const GeometryView& g, const std::vector<Ray>& rays)
     return bad;
 }
 
+// Build parameters of one quality. A fast build bins nodes down to a small size here, so that
+// test-sized inputs exercise the binned splits and not only the exact sweep below them.
+inline KdBuildParams quality_params(KdBuildQuality quality) {
+    KdBuildParams p;
+    p.quality = quality;
+    p.exact_below = 32;
+    return p;
+}
+
 inline std::vector<std::uint8_t> build_bytes(const Scene& scene, const KdBuildParams& params = {}) {
     return build_geometry_file(scene, params).writer.bytes();
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 
 #include "builders/geometry/geometry_file_builder.h"
 #include "builders/geometry/sah_kd_builder.h"
@@ -81,6 +82,46 @@ TEST_CASE("kdpm-build-geometry refuses bad input with one line and writes nothin
     CHECK_FALSE(fs::exists(out));
     const auto absurd = test::run_tool("kdpm-build-geometry x.obj -o y.kdg --empty-bonus 7");
     CHECK(absurd.exit_code == 2);
+    const auto quality = test::run_tool("kdpm-build-geometry x.obj -o y.kdg --quality best");
+    CHECK(quality.exit_code == 2);
+    CHECK(quality.output.find("fast or high") != std::string::npos);
+}
+
+TEST_CASE("kdpm-build-geometry --quality: both are exact, recorded, and identical across thread counts",
+          "[geometry][tools]") {
+    test::TempDir dir;
+    // A soup as OBJ, large enough for the fast build to bin its upper levels.
+    {
+        std::ofstream obj(dir / "soup.obj");
+        std::uint32_t v = 0;
+        for (const TriangleRecord& t : test::random_soup(12000, 43, 0.05f)) {
+            for (int c = 0; c < 3; ++c) {
+                const float* e = c == 0 ? nullptr : c == 1 ? t.e1 : t.e2;
+                obj << "v";
+                for (int a = 0; a < 3; ++a) obj << ' ' << t.v0[a] + (e ? e[a] : 0.0f);
+                obj << '\n';
+            }
+            obj << "f " << v + 1 << ' ' << v + 2 << ' ' << v + 3 << '\n';
+            v += 3;
+        }
+    }
+    const std::string mesh = (dir / "soup.obj").string();
+    std::map<std::string, std::vector<std::uint8_t>> files;
+    for (const std::string quality : {"fast", "high"}) {
+        for (const std::string threads : {"1", "2"}) {
+            const fs::path out = dir / (quality + threads + ".kdg");
+            const auto r = test::run_tool("kdpm-build-geometry " + mesh + " -o " + out.string() + " --quiet --quality " +
+                                          quality + " --exact-below 512 --threads " + threads);
+            REQUIRE(r.exit_code == 0);
+            files[quality + threads] = read_bytes(out);
+        }
+        INFO("quality: " << quality);
+        CHECK(files[quality + "1"] == files[quality + "2"]);
+        const auto v = test::run_tool("kdpm-validate --exhaustive " + (dir / (quality + "1.kdg")).string());
+        CHECK(v.exit_code == 0);
+        CHECK(GeometryFile::open(dir / (quality + "1.kdg")).metadata().parameters.at("quality") == quality);
+    }
+    CHECK(files["fast1"] != files["high1"]);
 }
 
 TEST_CASE("corrupt geometry files are refused", "[geometry][tools]") {

@@ -1,5 +1,5 @@
 // The real Sponza (66k triangles, with near-flat slivers and duplicates): the exhaustive check
-// passes and camera rays through the tree match brute force. Skipped without ../shared/scenes.
+// passes and camera rays through the tree match brute force, for both qualities. Skipped without ../shared/scenes.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -20,7 +20,10 @@ TEST_CASE("Sponza builds a sound tree that agrees with brute force", "[geometry]
     }
     const Scene scene = import_mesh(mesh);
     REQUIRE(scene.triangles.size() == 66454);
-    const auto bytes = test::build_bytes(scene);
+    KdBuildParams params;
+    params.quality = GENERATE(KdBuildQuality::high, KdBuildQuality::fast);
+    INFO("quality: " << quality_name(params.quality));
+    const auto bytes = test::build_bytes(scene, params);
     ValidationOptions exhaustive;
     exhaustive.exhaustive = true;
     REQUIRE_NOTHROW(validate_file(ContainerReader::from_bytes(bytes, "sponza.kdg"), exhaustive));

@@ -1,4 +1,4 @@
-// Closest hits through the kd-tree equal a brute-force loop over all triangles.
+// Closest hits through the kd-tree equal a brute-force loop over all triangles (both qualities).
 #include <catch2/catch.hpp>
 
 #include "builders/geometry/scene_card.h"
@@ -10,9 +10,11 @@
 using namespace kdpm;
 
 TEST_CASE("closest hits through the tree match brute force on random soups", "[geometry][traversal]") {
-    test::check_triangles(test::random_soup(60, 1, 0.3f), test::random_rays(30000, 101));
-    test::check_triangles(test::random_soup(1500, 2), test::random_rays(50000, 102));
-    test::check_triangles(test::random_soup(5000, 3, 0.02f), test::random_rays(20000, 103));
+    const KdBuildParams p = test::quality_params(GENERATE(KdBuildQuality::high, KdBuildQuality::fast));
+    INFO("quality: " << quality_name(p.quality));
+    test::check_triangles(test::random_soup(60, 1, 0.3f), test::random_rays(30000, 101), p);
+    test::check_triangles(test::random_soup(1500, 2), test::random_rays(50000, 102), p);
+    test::check_triangles(test::random_soup(5000, 3, 0.02f), test::random_rays(20000, 103), p);
 }
 
 TEST_CASE("closest hits match brute force on the shipped Cornell box", "[geometry][traversal]") {

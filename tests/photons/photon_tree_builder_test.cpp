@@ -67,7 +67,8 @@ TEST_CASE("Many coincident photons still give a valid tree", "[photons][builder]
 }
 
 TEST_CASE("The photon tree does not depend on the thread count", "[photons][builder]") {
-    auto set = test::synthetic_photons(60000, 4);
+    // More photons than a large node, so that the root is split in parallel chunks.
+    auto set = test::synthetic_photons(150000, 4);
     for (auto builder : {PhotonTreeBuilder::vvh, PhotonTreeBuilder::balanced}) {
         PhotonTreeOptions options;
         options.builder = builder;

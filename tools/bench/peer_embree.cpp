@@ -32,12 +32,13 @@ EmbreePeer::~EmbreePeer() {
     if (state_->device) rtcReleaseDevice(state_->device);
 }
 
-double EmbreePeer::build_ms() {
+double EmbreePeer::build_ms(EmbreeBuildQuality quality) {
+    const RTCBuildQuality q = quality == EmbreeBuildQuality::high ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
     if (state_->scene) rtcReleaseScene(state_->scene);
     const std::size_t tris = state_->vertices.size() / 9;
     auto start = std::chrono::steady_clock::now();
     RTCScene scene = rtcNewScene(state_->device);
-    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(scene, q);
     RTCGeometry geom = rtcNewGeometry(state_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vb = static_cast<float*>(
         rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), tris * 3));
@@ -45,7 +46,7 @@ double EmbreePeer::build_ms() {
         rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), tris));
     for (std::size_t i = 0; i < tris * 9; ++i) vb[i] = state_->vertices[i];
     for (std::size_t i = 0; i < tris * 3; ++i) ib[i] = static_cast<unsigned>(i);
-    rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
+    rtcSetGeometryBuildQuality(geom, q);
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene, geom);
     rtcReleaseGeometry(geom);

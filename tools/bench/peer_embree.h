@@ -1,6 +1,6 @@
 #pragma once
 // Embree 3, a peer for kdpm-bench only (never linked by the toolchain or runtime): its
-// high-quality BVH build and rtcIntersect1 over the same triangles and rays as kdpm.
+// BVH builds (high and medium quality) and rtcIntersect1 over the same triangles and rays as kdpm.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -17,13 +17,17 @@ struct PeerHit {
     std::uint32_t triangle;   // index into the triangle list, 0xffffffff for a miss
 };
 
+enum class EmbreeBuildQuality { medium, high };
+
 class EmbreePeer {
 public:
     // vertices: 9 floats per triangle (v0, v1, v2). threads: Embree's worker count.
     EmbreePeer(std::span<const float> triangle_vertices, int threads);
     ~EmbreePeer();
-    double build_ms();  // builds (again) with RTC_BUILD_QUALITY_HIGH and returns the time
-    // Traces one ray per element with rtcIntersect1, in parallel over `threads` (oneTBB).
+    // Builds (again) with RTC_BUILD_QUALITY_HIGH or _MEDIUM and returns the time.
+    double build_ms(EmbreeBuildQuality quality = EmbreeBuildQuality::high);
+    // Traces one ray per element with rtcIntersect1 through the last build, in parallel over
+    // `threads` (oneTBB).
     void intersect(std::span<const PeerRay> rays, std::span<PeerHit> hits) const;
 
 private:

@@ -62,9 +62,9 @@ struct PrimaryRays {
     std::vector<float> hit_points;  // 3 floats per ray that hit something
 };
 
-PrimaryRays primary_rays(const GeometryFile& g, std::uint32_t width, std::uint32_t height) {
+PrimaryRays primary_rays(const CameraRecord& camera, std::uint32_t width, std::uint32_t height) {
     PrimaryRays p;
-    auto cam = PinholeCamera::from_record(g.camera(), width, height, 1);
+    auto cam = PinholeCamera::from_record(camera, width, height, 1);
     p.rays.resize(static_cast<std::size_t>(width) * height);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
@@ -86,10 +86,31 @@ double trace_with_kdpm(const GeometryView& g, PrimaryRays& p) {
     });
 }
 
-void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, const PhotonMapView& photons,
+// The two qualities' trees on the same primary rays, passes interleaved so that both see the
+// same machine; hits must agree (exact trees differ at most in ties).
+void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, const GeometryFile& high,
+                       SceneBenchResult& out) {
+    PrimaryRays pf = primary_rays(fast.camera(), c.width, c.height), ph = pf;
+    std::vector<double> fast_ms, high_ms;
+    for (int f = 0; f < c.frames + 1; ++f) {
+        fast_ms.push_back(trace_with_kdpm(fast.view(), pf));
+        high_ms.push_back(trace_with_kdpm(high.view(), ph));
+    }
+    fast_ms.erase(fast_ms.begin());  // warm-up
+    high_ms.erase(high_ms.begin());
+    out.quality.fast_rays_ms = median_of(fast_ms);
+    out.quality.high_rays_ms = median_of(high_ms);
+    std::size_t same = 0;
+    for (std::size_t i = 0; i < pf.hits.size(); ++i)
+        same += pf.hits[i].found() == ph.hits[i].found() && (!pf.hits[i].found() || pf.hits[i].t == ph.hits[i].t);
+    out.quality.same_hits = pf.hits.empty() ? 1.0 : static_cast<double>(same) / pf.hits.size();
+}
+
+void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, const PhotonMaps& maps,
                    SceneBenchResult& out) {
+    const PhotonMapView& photons = maps.global;
     PeerFigures& peers = out.peers;
-    PrimaryRays p = primary_rays(geometry, c.width, c.height);
+    PrimaryRays p = primary_rays(geometry.camera(), c.width, c.height);
     const GeometryView& g = geometry.view();
 
     // Our rays: median of several passes over the same rays.
@@ -106,7 +127,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 
 #ifdef KDPM_HAVE_EMBREE
     {
-        say(c, "Embree: high-quality BVH build and rtcIntersect1");
+        say(c, "Embree: medium- and high-quality BVH builds and rtcIntersect1");
         std::vector<float> vertices;
         vertices.reserve(g.triangle_count * 9);
         for (std::uint32_t t = 0; t < g.triangle_count; ++t) {
@@ -116,8 +137,12 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             for (int a = 0; a < 3; ++a) vertices.push_back(tr.v0[a] + tr.e2[a]);
         }
         EmbreePeer embree(vertices, static_cast<int>(std::thread::hardware_concurrency()));
-        std::vector<double> builds;
-        for (int f = 0; f < c.frames; ++f) builds.push_back(embree.build_ms());
+        (void)embree.build_ms();  // warm-up: Embree starts its threads on the first build
+        std::vector<double> medium, builds;
+        for (int f = 0; f < c.frames; ++f) medium.push_back(embree.build_ms(EmbreeBuildQuality::medium));
+        peers.embree_medium_build_ms = median_of(medium);
+        // The high-quality build last: rtcIntersect1 below traces through it.
+        for (int f = 0; f < c.frames; ++f) builds.push_back(embree.build_ms(EmbreeBuildQuality::high));
         peers.embree_build_ms = median_of(builds);
         std::vector<PeerHit> hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
@@ -154,8 +179,18 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 #ifdef KDPM_HAVE_NANOFLANN
     if (photons.photon_count > 0) {
         say(c, "nanoflann: k-nearest queries at the same points");
-        NanoflannPeer nano({photons.x, photons.photon_count}, {photons.y, photons.photon_count},
-                           {photons.z, photons.photon_count});
+        // nanoflann's kd-tree build over the photons of both maps, as kdpm-build-photons builds both.
+        auto peer_of = [](const PhotonMapView& m) {
+            return NanoflannPeer({m.x, m.photon_count}, {m.y, m.photon_count}, {m.z, m.photon_count});
+        };
+        std::vector<double> builds;
+        for (int f = 0; f < c.frames; ++f) {
+            double ms = peer_of(photons).build_ms();
+            if (maps.caustic.photon_count > 0) ms += peer_of(maps.caustic).build_ms();
+            builds.push_back(ms);
+        }
+        peers.nanoflann_build_ms = median_of(builds);
+        NanoflannPeer nano = peer_of(photons);
         for (int k : c.ks) {
             nano.knn(p.hit_points, k, theirs_kth);
             peers.nanoflann_knn_ms[k] = median_ms(c.frames, [&] { nano.knn(p.hit_points, k, theirs_kth); });
@@ -182,16 +217,26 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
     say(c, "importing " + c.card.string());
     Scene scene = load_scene_input(c.card);
     out.triangles = scene.triangles.size();
-    KdBuildParams params;
+    KdBuildParams params;  // --quality high, the default
+    KdBuildParams fast = params;
+    fast.quality = KdBuildQuality::fast;
 
     for (int t : c.threads) {
-        say(c, "geometry kd-tree build, " + thread_label(t));
+        say(c, "geometry kd-tree builds (high, fast), " + thread_label(t));
         ThreadLimit limit(t);
         out.geometry_build_ms[t] = median_ms(c.frames, [&] { (void)build_geometry_file(scene, params); });
+        out.geometry_build_fast_ms[t] = median_ms(c.frames, [&] { (void)build_geometry_file(scene, fast); });
     }
-    build_geometry_file(scene, params).writer.write(kdg);
+    GeometryBuild high_build = build_geometry_file(scene, params);
+    high_build.writer.write(kdg);
+    out.quality.high_sah = high_build.stats.sah_cost;
     out.kdg_bytes = std::filesystem::file_size(kdg);
     GeometryFile geometry = GeometryFile::open(kdg);
+    const GeometryBuild fast_build = build_geometry_file(scene, fast);
+    out.quality.fast_sah = fast_build.stats.sah_cost;
+    const GeometryFile fast_geometry = GeometryFile::from_bytes(fast_build.writer.bytes(), c.name + "-fast.kdg");
+    say(c, "primary rays through the fast and the high tree");
+    compare_qualities(c, fast_geometry, geometry, out);
 
     ShootOptions shoot;
     shoot.photons = c.photons;
@@ -238,9 +283,11 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
             out.cuda_note = "no CUDA device (" + std::string(e.what()) + ")";
         }
     }
-    if (c.peers) compare_peers(c, geometry, loaded.views().photons.global, out);
+    if (c.peers) compare_peers(c, geometry, loaded.views().photons, out);
     const int all = c.threads.back();
     out.peers.kdpm_build_ms = out.geometry_build_ms[all];
+    out.peers.kdpm_fast_build_ms = out.geometry_build_fast_ms[all];
+    out.peers.kdpm_photon_trees_ms = out.photon_tree_ms[all];
     return out;
 }
 

@@ -31,9 +31,18 @@ struct FrameTable {
     std::map<int, double> with_gather_ms;  // k -> ray tracing + gather
 };
 
+// kdpm's two geometry build qualities on the same scene (high is the default and the .kdg used).
+struct QualityFigures {
+    double fast_sah = 0, high_sah = 0;          // SAH cost of the trees
+    double fast_rays_ms = 0, high_rays_ms = 0;  // same primary rays, all threads, medians
+    double same_hits = 0;                       // fraction of those rays with the same hit distance
+};
+
 struct PeerFigures {
     bool embree = false, nanoflann = false;
-    double embree_build_ms = 0, kdpm_build_ms = 0;        // all threads
+    double embree_build_ms = 0, kdpm_build_ms = 0;        // all threads; kdpm: --quality high
+    double embree_medium_build_ms = 0, kdpm_fast_build_ms = 0;  // Embree MEDIUM; kdpm --quality fast
+    double nanoflann_build_ms = 0, kdpm_photon_trees_ms = 0;    // global + caustic trees, same photons
     double embree_rays_ms = 0, kdpm_rays_ms = 0;          // same primary rays, all threads
     double ray_agreement = 0;                             // fraction of rays with the same hit triangle
     std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
@@ -43,7 +52,9 @@ struct PeerFigures {
 struct SceneBenchResult {
     std::string name;
     std::uint64_t triangles = 0, photons_emitted = 0, photons_stored = 0, primary_hits = 0;
-    std::map<int, double> geometry_build_ms;   // threads -> median
+    std::map<int, double> geometry_build_ms;   // threads -> median, --quality high (the default)
+    std::map<int, double> geometry_build_fast_ms;  // threads -> median, --quality fast
+    QualityFigures quality;
     std::map<int, double> shoot_ms;            // threads -> one run (deterministic work)
     std::map<int, double> photon_tree_ms;      // threads -> median (VVH, both maps)
     double balanced_tree_ms = 0;               // all threads, for comparison

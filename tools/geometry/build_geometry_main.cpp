@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     int threads = 0;
     double traversal = 1.0, intersection = 1.5, bonus = 0.2;
     KdBuildParams params;
+    int exact_below = static_cast<int>(params.exact_below);
     cli::Args args("kdpm-build-geometry",
                    "Builds the SAH geometry kd-tree (.kdg) of a scene card (.json) or a mesh (OBJ, glTF, PLY, ...).");
     args.positional("INPUT", &input, "scene card (.json) or mesh file")
@@ -31,6 +32,16 @@ int main(int argc, char** argv) {
         .option("empty-bonus", &bonus, "B", "cost reduction for splits with an empty side, 0..1 (default 0.2)", 0.0, 1.0)
         .option("max-depth", &params.max_depth, "N", "depth limit, 0 = 8 + 1.3 log2(triangles) (default 0)", 0, 60)
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
+        .option("quality", "fast|high",
+                "fast: binned SAH in large nodes, exact below --exact-below triangles; high: exact SAH sweep "
+                "with perfect splits everywhere (default high)",
+                [&](const std::string& v) {
+                    const auto q = parse_quality(v);
+                    if (!q) throw std::invalid_argument("expected fast or high, got '" + v + "'");
+                    params.quality = *q;
+                })
+        .option("exact-below", &exact_below, "N", "fast: nodes with fewer triangles use the exact sweep (default 4096)",
+                1, 1 << 30)
         .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
     args.short_name('o', "output");
@@ -38,6 +49,7 @@ int main(int argc, char** argv) {
     params.traversal_cost = static_cast<float>(traversal);
     params.intersection_cost = static_cast<float>(intersection);
     params.empty_bonus = static_cast<float>(bonus);
+    params.exact_below = static_cast<std::uint32_t>(exact_below);
 
     return cli::run_tool("kdpm-build-geometry", [&] {
         if (output.empty()) throw std::runtime_error("no output file given (-o FILE)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -45,6 +46,20 @@ SppmPlan sppm_plan(const RenderSettings& settings, const SceneViews& scene, std:
                                                       : static_cast<std::uint64_t>(width) * height;
     if (sppm.photons_per_pass > 0xffffffffull)
         throw std::runtime_error("sppm photons per pass must be at most 4294967295");
+    // A pass keeps its photons' hits and their grid on the host (about 4 stored per path in a
+    // closed room) beside one shooting batch.
+    const double photon_bytes = static_cast<double>(sppm.photons_per_pass) * 4.0 * (sizeof(PhotonHit) + sizeof(SppmPhoton)) +
+                                static_cast<double>(64u << 20);
+    const double available = static_cast<double>(available_memory_bytes());
+    if (photon_bytes > available) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "%llu sppm photons per pass need about %.1f GiB of memory, but only %.1f GiB is available; "
+                      "shoot fewer (--photons-per-pass)",
+                      static_cast<unsigned long long>(sppm.photons_per_pass), photon_bytes / 1073741824.0,
+                      available / 1073741824.0);
+        throw std::runtime_error(text);
+    }
     const GeometryInfo& g = scene.geometry.info;
     const float diagonal = std::sqrt(std::pow(g.bounds_max[0] - g.bounds_min[0], 2.0f) +
                                      std::pow(g.bounds_max[1] - g.bounds_min[1], 2.0f) +

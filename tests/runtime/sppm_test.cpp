@@ -97,10 +97,11 @@ TEST_CASE("SPPM on the Cornell box converges to the path-traced reference", "[re
 
 TEST_CASE("kdpm-render refuses bad sppm options in one line", "[render][sppm][cli]") {
     CornellBox box;
-    const std::string out = " -o " + (box.dir / "s.png").string();
+    const std::string out = " --backend cpu -o " + (box.dir / "s.png").string();
     for (const std::string options :
          {"--mode sppm --passes 0", "--mode sppm --passes -3", "--mode sppm --passes many", "--mode sppm --passes",
-          "--mode path --passes 4", "--mode sppm --photons-per-pass 0", "--mode sppm --sppm-radius -1"}) {
+          "--mode path --passes 4", "--mode sppm --photons-per-pass 0", "--mode sppm --sppm-radius -1",
+          "--mode sppm --photons-per-pass 2147483647"}) {
         auto r = test::run_tool("kdpm-render " + box.kdg + " " + options + out);
         INFO(options << "\n" << r.output);
         CHECK(r.exit_code != 0);

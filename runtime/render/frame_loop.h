@@ -14,6 +14,7 @@
 #include "runtime/render/photon_gather_pass.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/render/shade_pass.h"
+#include "runtime/render/sppm_loop.h"
 #include "runtime/render/stage_times.h"
 #include "runtime/render/trace_pass.h"
 
@@ -28,12 +29,17 @@ struct FramePlan {
     bool gather_photons = false;
     bool direct_light = false;
     bool path_trace = false;  // --mode path: one path pass per sample instead of trace/gather/shade
+    bool progressive = false;  // --mode sppm: the passes of sppm_loop.h instead of samples
+    SppmPlan sppm;
 };
 
 template <class Device>
 void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                const PhotonGatherPass& gather_template,
                const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) {
+    if (plan.progressive)
+        return run_sppm(dev, geometry, lights, plan.camera, plan.width, plan.height, plan.settings, plan.epsilon,
+                        plan.sppm, linear, aovs, times);
     const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
     // The path pass keeps its vertices in registers: only the sums and the AOVs.
     const std::uint64_t per_pixel = plan.path_trace ? 0 : pixels;

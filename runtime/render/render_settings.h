@@ -17,6 +17,7 @@ enum class RenderMode : std::uint32_t {
     direct_photons = 1,  // direct light by shadow rays + indirect (global map, bounce >= 1) + caustics map
     direct = 2,          // direct light only (no photon map needed)
     path = 3,            // the reference: unbiased path tracing with next-event estimation (no photon map)
+    sppm = 4,            // stochastic progressive photon mapping: photons re-shot each pass (no photon map)
 };
 // photons and direct+photons read a photon map; direct and path do not.
 inline bool mode_needs_photons(RenderMode mode) {
@@ -36,7 +37,10 @@ struct RenderSettings {
     bool fixed_radius = false;            // every photon within the search limit instead of the k nearest
     std::uint32_t light_samples = 16;     // shadow rays per diffuse point (lights picked by power)
     std::uint32_t max_depth = 8;          // mirror/glass bounces followed
-    std::uint32_t max_bounces = 0;        // mode path: diffuse vertices per path; 0: unlimited (roulette)
+    std::uint32_t max_bounces = 0;        // modes path, sppm: diffuse vertices per path; 0: unlimited (roulette)
+    std::uint32_t passes = 16;            // mode sppm: progressive passes (the camera is jittered anew in each)
+    std::uint64_t photons_per_pass = 0;   // mode sppm: photon paths shot per pass; 0: one per pixel
+    float sppm_radius = 0.0f;             // mode sppm: initial gather radius; 0: from the scene
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -16,7 +17,8 @@ RenderMode parse_render_mode(std::string_view text) {
     if (text == "direct+photons") return RenderMode::direct_photons;
     if (text == "direct") return RenderMode::direct;
     if (text == "path") return RenderMode::path;
-    throw std::invalid_argument("expected photons, direct+photons, direct or path, got '" + std::string(text) + "'");
+    if (text == "sppm") return RenderMode::sppm;
+    throw std::invalid_argument("expected photons, direct+photons, direct, path or sppm, got '" + std::string(text) + "'");
 }
 
 const char* render_mode_name(RenderMode mode) {
@@ -25,9 +27,56 @@ const char* render_mode_name(RenderMode mode) {
         case RenderMode::direct_photons: return "direct+photons";
         case RenderMode::direct: return "direct";
         case RenderMode::path: return "path";
+        case RenderMode::sppm: return "sppm";
     }
     return "?";
 }
+
+namespace {
+
+// Photons up to 63 bounces stand for "unlimited" (roulette ends nearly every path before).
+constexpr std::uint32_t kSppmUnlimitedPhotonBounces = 63;
+
+SppmPlan sppm_plan(const RenderSettings& settings, const SceneViews& scene, std::uint32_t width, std::uint32_t height) {
+    if (settings.passes < 1 || settings.passes > 1000000)
+        throw std::runtime_error("sppm passes must be in 1..1000000, got " + std::to_string(settings.passes));
+    SppmPlan sppm;
+    sppm.passes = settings.passes;
+    sppm.photons_per_pass = settings.photons_per_pass ? settings.photons_per_pass
+                                                      : static_cast<std::uint64_t>(width) * height;
+    if (sppm.photons_per_pass > 0xffffffffull)
+        throw std::runtime_error("sppm photons per pass must be at most 4294967295");
+    // A pass keeps its photons' hits and their grid on the host (about 4 stored per path in a
+    // closed room) beside one shooting batch.
+    const double photon_bytes = static_cast<double>(sppm.photons_per_pass) * 4.0 * (sizeof(PhotonHit) + sizeof(SppmPhoton)) +
+                                static_cast<double>(64u << 20);
+    const double available = static_cast<double>(available_memory_bytes());
+    if (photon_bytes > available) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "%llu sppm photons per pass need about %.1f GiB of memory, but only %.1f GiB is available; "
+                      "shoot fewer (--photons-per-pass)",
+                      static_cast<unsigned long long>(sppm.photons_per_pass), photon_bytes / 1073741824.0,
+                      available / 1073741824.0);
+        throw std::runtime_error(text);
+    }
+    const GeometryInfo& g = scene.geometry.info;
+    const float diagonal = std::sqrt(std::pow(g.bounds_max[0] - g.bounds_min[0], 2.0f) +
+                                     std::pow(g.bounds_max[1] - g.bounds_min[1], 2.0f) +
+                                     std::pow(g.bounds_max[2] - g.bounds_min[2], 2.0f));
+    // The photon map's typical k-nearest radius when there is one, else 1/100 of the scene.
+    sppm.initial_radius = settings.sppm_radius > 0.0f         ? settings.sppm_radius
+                          : scene.photons.typical_radius > 0.0f ? scene.photons.typical_radius
+                                                                : 0.01f * diagonal;
+    if (!(sppm.initial_radius > 0.0f) || !std::isfinite(sppm.initial_radius))
+        throw std::runtime_error("sppm needs a positive initial radius (--sppm-radius R)");
+    sppm.photon_ray_offset = photon_ray_offset(g);
+    sppm.max_photon_bounce = settings.max_bounces == 0 ? kSppmUnlimitedPhotonBounces
+                                                       : std::min(settings.max_bounces - 1, 255u);
+    return sppm;
+}
+
+}  // namespace
 
 Renderer::Renderer(const SceneViews& scene, BackendKind backend) : scene_(scene), backend_(backend) {
     if (backend == BackendKind::cuda) {
@@ -70,7 +119,9 @@ RenderResult Renderer::render(const RenderSettings& settings) {
                                  " is out of range (1..16384)");
     if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
         throw std::runtime_error("camera field of view must be in (0, 180) degrees");
-    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, settings.spp);
+    plan.progressive = settings.mode == RenderMode::sppm;
+    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height,
+                                             plan.progressive ? settings.passes : settings.spp);
     plan.epsilon = render_ray_offset(scene_.geometry.info);
     plan.direct_light = settings.mode != RenderMode::photons;
     plan.path_trace = settings.mode == RenderMode::path;
@@ -86,6 +137,8 @@ RenderResult Renderer::render(const RenderSettings& settings) {
         !(settings.max_radius > 0.0f || (settings.max_radius < 0.0f && scene_.photons.typical_radius > 0.0f)))
         throw std::runtime_error(
             "a fixed-radius gather needs a radius: the photon map records none, give one (--max-radius R > 0)");
+
+    if (plan.progressive) plan.sppm = sppm_plan(settings, scene_, plan.width, plan.height);
 
     RenderResult result;
     impl_->run(plan, result.linear, result.aovs, result.times);

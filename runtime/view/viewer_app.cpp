@@ -125,6 +125,7 @@ private:
         s.width = step.width;
         s.height = step.height;
         s.spp = step.spp;
+        s.passes = step.spp;  // sppm refines by passes: 1, 2, 4, ... while the camera is still
         s.k = options_.k;
         s.mode = options_.mode;
         s.light_samples = light_samples_;

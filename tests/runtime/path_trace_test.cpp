@@ -12,18 +12,14 @@
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"
 #include "tests/runtime/hand_built_scene.h"
+#include "tests/runtime/image_stats.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
+using kdpm::test::mean_of;
 
 namespace {
-
-double mean_of(const Image& image) {
-    double sum = 0;
-    for (float v : image.rgb) sum += v;
-    return sum / static_cast<double>(image.rgb.size());
-}
 
 // The unit cube, every wall facing inside, emitting le and reflecting rho, each wall also a light.
 struct FurnaceBox {
@@ -55,12 +51,6 @@ std::vector<float> read_exr(const std::string& path) {
     for (std::size_t i = 0; i < px.size(); i += n)
         for (int c = 0; c < 3; ++c) rgb.push_back(px[i + c]);
     return rgb;
-}
-
-double mean_of(const std::vector<float>& v) {
-    double sum = 0;
-    for (float x : v) sum += x;
-    return sum / static_cast<double>(v.size());
 }
 
 }  // namespace

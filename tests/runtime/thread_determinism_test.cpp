@@ -11,7 +11,7 @@ using namespace kdpm;
 TEST_CASE("CPU renders are identical with 1 and 2 threads", "[render][determinism]") {
     test::BuiltScene scene(800, 3, 48, 32);
     RenderSettings settings;
-    settings.mode = GENERATE(RenderMode::direct, RenderMode::path);
+    settings.mode = GENERATE(RenderMode::direct, RenderMode::path, RenderMode::sppm);
     INFO("mode " << static_cast<int>(settings.mode));
     settings.spp = 2;
     settings.light_samples = 4;

@@ -111,9 +111,11 @@ TEST_CASE("kdpm-view screenshot of the Cornell box matches kdpm-render", "[view]
 
     const std::string common = " --width 160 --height 160 --k 32 --backend cpu";
     const fs::path reference = dir / "render.png", screenshot = dir / "view.png";
-    for (const char* mode : {"photons", "direct"}) {
+    // The viewer's one sample per pixel is one sppm pass.
+    for (const std::string mode : {"photons", "direct", "sppm"}) {
         INFO("mode " << mode);
-        r = test::run_tool("kdpm-render " + kdg + " " + kdp + common + " --mode " + mode + " -o " +
+        const std::string passes = mode == "sppm" ? " --passes 1" : "";
+        r = test::run_tool("kdpm-render " + kdg + " " + kdp + common + " --mode " + mode + passes + " -o " +
                            reference.string() + " --quiet");
         REQUIRE(r.exit_code == 0);
         r = shell(kViewerEnv + "xvfb-run -a " + test::tool_path("kdpm-view") + " " + kdg + " " + kdp + common + " --mode " + mode +

@@ -44,7 +44,8 @@ int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
     int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, max_bounces = 0, threads = 0;
-    double exposure = 0.0, max_radius = -1.0, disc = 0.0;
+    int passes = 0, photons_per_pass = 0;  // 0: not given
+    double exposure = 0.0, max_radius = -1.0, disc = 0.0, sppm_radius = 0.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
     CameraOverride camera;
@@ -75,15 +76,22 @@ int run(int argc, char** argv) {
         .option("disc", &disc, "F",
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
-        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, or path (the "
-                "path-traced reference; no photon map needed)",
+        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, path (the "
+                "path-traced reference; no photon map needed) or sppm (progressive photon mapping, photons shot anew "
+                "each pass; no photon map needed)",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
         .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
                 4096)
         .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
         .option("max-bounces", &max_bounces, "N",
-                "mode path: diffuse bounces shaded per path, 1 = direct light only (default 0: unlimited, "
+                "modes path and sppm: diffuse bounces shaded per path, 1 = direct light only (default 0: unlimited, "
                 "ended by Russian roulette)", 0, 1000000)
+        .option("passes", &passes, "N", "mode sppm: progressive passes (default 16)", 1, 1000000)
+        .option("photons-per-pass", &photons_per_pass, "N", "mode sppm: photon paths shot per pass (default: one per pixel)",
+                1, 2147483647)
+        .option("sppm-radius", &sppm_radius, "R",
+                "mode sppm: initial gather radius (default: the photon map's typical radius, else 1/100 of the "
+                "scene's diagonal)", 1e-30, 1e30)
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
@@ -98,6 +106,8 @@ int run(int argc, char** argv) {
     args.short_name('o', "output");
     args.parse(argc, argv);
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
+    if (settings.mode != RenderMode::sppm && (passes || photons_per_pass || sppm_radius > 0.0))
+        throw std::invalid_argument("--passes, --photons-per-pass and --sppm-radius are for --mode sppm");
     // Refuse an impossible destination (or one that is an input) before spending time on the frame.
     std::vector<std::filesystem::path> inputs{geometry_path};
     if (!photon_path.empty()) inputs.push_back(photon_path);
@@ -126,6 +136,9 @@ int run(int argc, char** argv) {
     settings.light_samples = static_cast<std::uint32_t>(light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.max_bounces = static_cast<std::uint32_t>(max_bounces);
+    if (passes) settings.passes = static_cast<std::uint32_t>(passes);
+    settings.photons_per_pass = static_cast<std::uint64_t>(photons_per_pass);
+    settings.sppm_radius = static_cast<float>(sppm_radius);
     settings.post.exposure_stops = static_cast<float>(exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };
@@ -137,8 +150,9 @@ int run(int argc, char** argv) {
     auto written = write_frame(output, frame);
 
     if (!quiet) {
-        std::cout << "kdpm-render: " << result.linear.width << "x" << result.linear.height << ", " << settings.spp
-                  << " spp, mode " << render_mode_name(settings.mode) << ", backend " << backend_name(selected.kind)
+        std::cout << "kdpm-render: " << result.linear.width << "x" << result.linear.height << ", "
+                  << (settings.mode == RenderMode::sppm ? settings.passes : settings.spp)
+                  << (settings.mode == RenderMode::sppm ? " passes" : " spp") << ", mode " << render_mode_name(settings.mode) << ", backend " << backend_name(selected.kind)
                   << "\n";
         if (renderer.upload_ms() > 0) std::printf("  scene upload %.2f ms\n", renderer.upload_ms());
         std::cout << format_stage_table(result.times, scene.load_ms());

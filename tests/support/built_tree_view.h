@@ -1,24 +1,10 @@
 #pragma once
 // The kernels' view of a photon tree still in memory (tests), as PhotonMapFile
 // gives for a mapped .kdp.
-#include "builders/photons/photon_tree_builder.h"
-#include "runtime/photons/photon_map_view.h"
+#include "tools/photons/built_photon_map_view.h"
 
 namespace kdpm {
 
-inline PhotonMapView view_of(const BuiltPhotonTree& t) {
-    PhotonMapView v;
-    v.nodes = t.nodes.data();
-    v.node_count = static_cast<std::uint32_t>(t.nodes.size());
-    v.photon_count = t.info.photon_count;
-    v.x = t.x.data();
-    v.y = t.y.data();
-    v.z = t.z.data();
-    v.power = t.power.data();
-    v.directions = t.directions.data();
-    v.flags = t.flags.data();
-    v.emitted_count = t.info.emitted_count;
-    return v;
-}
+inline PhotonMapView view_of(const BuiltPhotonTree& t) { return photon_map_view_of(t); }
 
 }  // namespace kdpm

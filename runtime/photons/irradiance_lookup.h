@@ -19,7 +19,7 @@ namespace kdpm {
 struct IrradianceMapView {
     PhotonMapView photons;
     const PrecomputedIrradiance* irradiance = nullptr;  // one per photon, leaf order
-    bool present() const { return photons.node_count > 0 && photons.photon_count > 0; }
+    KDPM_HD bool present() const { return photons.node_count > 0 && photons.photon_count > 0; }
 };
 
 // The search radius of a k-nearest estimate when it is left automatic: `factor` times the

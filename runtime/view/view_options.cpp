@@ -46,7 +46,8 @@ void ViewOptions::next_mode(bool have_photons) {
         case RenderMode::photons: mode = RenderMode::direct_photons; break;
         case RenderMode::direct_photons: mode = RenderMode::direct; break;
         case RenderMode::direct: mode = RenderMode::photons; break;
-        case RenderMode::path: mode = RenderMode::photons; break;  // path is chosen in the panel
+        case RenderMode::path:  // path and final-gather are chosen in the panel
+        case RenderMode::final_gather: mode = RenderMode::photons; break;
     }
 }
 

@@ -18,6 +18,7 @@
 #include "tests/support/built_tree_view.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
+#include "tools/photons/irradiance_step.h"
 
 using namespace kdpm;
 
@@ -25,14 +26,7 @@ namespace {
 
 constexpr std::uint32_t kK = 24;
 
-IrradiancePrecompute every_nth(std::uint32_t every) {
-    return [every](const BuiltPhotonTree& global) {
-        IrradianceSamples s;
-        s.slots = every_nth_photon(global.info.photon_count, every);
-        s.irradiance = precompute_irradiance(view_of(global), s.slots, irradiance_estimate_params(kK, global.info.query_radius));
-        return s;
-    };
-}
+IrradiancePrecompute every_nth(std::uint32_t every) { return every_nth_photon_irradiance(every, kK); }
 
 // Jensen's estimate by sorting every photon by distance: the k nearest that may light the
 // surface (the runtime's photon filter), r the k-th distance or the search limit.

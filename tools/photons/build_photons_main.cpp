@@ -14,8 +14,7 @@
 #include "formats/container_reader.h"
 #include "formats/container_writer.h"
 #include "runtime/backend/thread_limit.h"
-#include "runtime/photons/irradiance_precompute.h"
-#include "tools/photons/built_photon_map_view.h"
+#include "tools/photons/irradiance_step.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
@@ -76,14 +75,8 @@ int main(int argc, char** argv) {
         if (irradiance_every > 0) {
             meta.parameters["irradiance_every"] = std::to_string(irradiance_every);
             meta.parameters["irradiance_k"] = std::to_string(irradiance_k);
-            irradiance = [&](const BuiltPhotonTree& global) {
-                const RadianceEstimateParams params =
-                    irradiance_estimate_params(static_cast<std::uint32_t>(irradiance_k), global.info.query_radius);
-                IrradianceSamples samples;
-                samples.slots = every_nth_photon(global.info.photon_count, static_cast<std::uint32_t>(irradiance_every));
-                samples.irradiance = precompute_irradiance(photon_map_view_of(global), samples.slots, params);
-                return samples;
-            };
+            irradiance = every_nth_photon_irradiance(static_cast<std::uint32_t>(irradiance_every),
+                                                     static_cast<std::uint32_t>(irradiance_k));
         }
         PhotonMapBuild built = build_photon_map_file(set, options, meta, irradiance);
         progress.finish();

@@ -44,6 +44,7 @@ int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
     int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, max_bounces = 0, threads = 0;
+    int gather_rays = 64;
     double exposure = 0.0, max_radius = -1.0, disc = 0.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
@@ -75,8 +76,8 @@ int run(int argc, char** argv) {
         .option("disc", &disc, "F",
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
-        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, or path (the "
-                "path-traced reference; no photon map needed)",
+        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, path (the "
+                "path-traced reference; no photon map needed), or final-gather (gather rays read the photon map)",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
         .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
                 4096)
@@ -84,6 +85,9 @@ int run(int argc, char** argv) {
         .option("max-bounces", &max_bounces, "N",
                 "mode path: diffuse bounces shaded per path, 1 = direct light only (default 0: unlimited, "
                 "ended by Russian roulette)", 0, 1000000)
+        .option("gather-rays", &gather_rays, "N",
+                "mode final-gather: cosine-distributed gather rays per diffuse point and sample (default 64)", 1,
+                static_cast<int>(kMaxGatherRays))
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
@@ -126,6 +130,12 @@ int run(int argc, char** argv) {
     settings.light_samples = static_cast<std::uint32_t>(light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.max_bounces = static_cast<std::uint32_t>(max_bounces);
+    settings.gather_rays = static_cast<std::uint32_t>(gather_rays);
+    if (settings.mode == RenderMode::final_gather && !scene.views().photons.empty() &&
+        !scene.views().photons.irradiance.present() && !quiet)
+        std::cerr << "kdpm-render: " << photon_path
+                  << " has no precomputed irradiance: gather hits use the k-nearest estimate (slower; rebuild it "
+                     "with kdpm-build-photons)\n";
     settings.post.exposure_stops = static_cast<float>(exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };

@@ -60,7 +60,8 @@ struct FinalGatherPass {
             if (maps.caustic.node_count > 0)
                 l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
                          .radiance;
-            const std::uint32_t rays = gather_rays < 1 ? 1 : (gather_rays > kMaxGatherRays ? kMaxGatherRays : gather_rays);
+            const std::uint32_t rays =
+                gather_rays < 1 ? 1 : (gather_rays > kMaxGatherRays ? kMaxGatherRays : gather_rays);
             glm::vec3 sum(0.0f);
             for (std::uint32_t r = 0; r < rays; ++r) sum += gather(v, (pixel << 32) | sample, (i << 16) | r, heap);
             // Cosine sampling: f_r L cos / pdf = albedo L per ray.

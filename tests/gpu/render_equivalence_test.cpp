@@ -124,7 +124,8 @@ TEST_CASE("CUDA path-traces like the CPU, within the path tracer's tolerance", "
 
 // Gather rays leave in cosine-distributed directions (cosf/sinf, last-place differences between
 // glibc and libdevice), so, like paths, a few of them may go elsewhere: the path tracer's tolerance.
-TEST_CASE("CUDA final-gathers like the CPU, with the precomputed irradiance and without", "[gpu][render][final-gather]") {
+TEST_CASE("CUDA final-gathers like the CPU, with the precomputed irradiance and without",
+          "[gpu][render][final-gather]") {
     auto scene = test::build_gpu_test_scene("cornell-box", 50000);
     REQUIRE(scene.views.photons.irradiance.present());
     SceneViews without = scene.views;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "builders/photons/photon_map_writer.h"
@@ -75,7 +76,8 @@ TEST_CASE("the irradiance map round-trips and holds the k-nearest irradiance at 
     const IrradianceMapView irr = file.irradiance_map();
     REQUIRE(irr.present());
     REQUIRE(irr.photons.photon_count == (global.photon_count + 3) / 4);
-    auto source = file.container().section<std::uint32_t>(photon_tree_section(PhotonMapKind::irradiance, ptree_field_source));
+    auto source =
+        file.container().section<std::uint32_t>(photon_tree_section(PhotonMapKind::irradiance, ptree_field_source));
     std::vector<std::uint32_t> sorted(source.begin(), source.end());
     std::sort(sorted.begin(), sorted.end());
     CHECK(sorted == every_nth_photon(global.photon_count, 4));
@@ -102,7 +104,8 @@ TEST_CASE("the irradiance map round-trips and holds the k-nearest irradiance at 
 
 TEST_CASE("broken irradiance maps are refused by the validator and the loader", "[photons][irradiance][corrupt]") {
     const PhotonHitSet set = test::synthetic_photons(2000, 22);
-    const BuiltPhotonTree global = build_photon_tree(set.hits, PhotonTreeOptions{}, set.info.emitted_count, set.info.max_bounces);
+    const BuiltPhotonTree global =
+        build_photon_tree(set.hits, PhotonTreeOptions{}, set.info.emitted_count, set.info.max_bounces);
     const BuiltIrradianceMap good = build_irradiance_map(global, set.hits, every_nth(4)(global), PhotonTreeOptions{});
     auto bytes_with = [&](auto edit) {
         BuiltIrradianceMap m = good;
@@ -120,7 +123,8 @@ TEST_CASE("broken irradiance maps are refused by the validator and the loader", 
         {"NaN", bytes_with([](BuiltIrradianceMap& m) { m.irradiance[5].rgb[1] = std::nanf(""); })},
         {"infinity", bytes_with([](BuiltIrradianceMap& m) { m.irradiance[0].rgb[2] = INFINITY; })},
         {"negative", bytes_with([](BuiltIrradianceMap& m) { m.irradiance[7].rgb[0] = -1.0f; })},
-        {"source out of range", bytes_with([&](BuiltIrradianceMap& m) { m.global_slot[3] = global.info.photon_count; })},
+        {"source out of range",
+         bytes_with([&](BuiltIrradianceMap& m) { m.global_slot[3] = global.info.photon_count; })},
         {"source twice", bytes_with([](BuiltIrradianceMap& m) { m.global_slot[3] = m.global_slot[4]; })},
         {"source elsewhere", bytes_with([](BuiltIrradianceMap& m) { std::swap(m.global_slot[3], m.global_slot[9]); })},
     };
@@ -144,7 +148,8 @@ TEST_CASE("a format 1.0 .kdp without the irradiance map still loads", "[photons]
     CHECK(file.view(PhotonMapKind::global).photon_count == 1000);
 }
 
-TEST_CASE("kdpm-build-photons stores the irradiance map by default, kdpm-inspect lists it", "[photons][irradiance][tools]") {
+TEST_CASE("kdpm-build-photons stores the irradiance map by default, kdpm-inspect lists it",
+          "[photons][irradiance][tools]") {
     test::TempDir dir;
     const auto hits = dir / "p.kdph", with = dir / "with.kdp", without = dir / "without.kdp";
     test::write_photon_hits_file(test::synthetic_photons(4000, 24), hits);
@@ -156,11 +161,58 @@ TEST_CASE("kdpm-build-photons stores the irradiance map by default, kdpm-inspect
     CHECK(file.irradiance_map().photons.photon_count == 500);
     CHECK(file.metadata().parameters.at("irradiance_every") == "8");
     auto inspect = test::run_tool("kdpm-inspect " + with.string());
-    CHECK_THAT(inspect.output, Catch::Contains("irradiance_tree.irradiance") && Catch::Contains("irradiance_tree.source"));
+    CHECK_THAT(inspect.output,
+               Catch::Contains("irradiance_tree.irradiance") && Catch::Contains("irradiance_tree.source"));
     CHECK(test::run_tool("kdpm-validate " + with.string()).exit_code == 0);
 
     REQUIRE(test::run_tool("kdpm-build-photons " + hits.string() + " -o " + without.string() +
                            " --irradiance-every 0 --quiet").exit_code == 0);
     CHECK_FALSE(PhotonMapFile::open(without).has_map(PhotonMapKind::irradiance));
-    CHECK(test::run_tool("kdpm-build-photons " + hits.string() + " -o " + without.string() + " --irradiance-k 0").exit_code == 2);
+    const std::string bad_k = "kdpm-build-photons " + hits.string() + " -o " + without.string() + " --irradiance-k 0";
+    CHECK(test::run_tool(bad_k).exit_code == 2);
+}
+
+TEST_CASE("a gather hit reads the irradiance of the nearest chosen photon on its surface",
+          "[photons][irradiance]") {
+    const PhotonHitSet set = test::synthetic_photons(4000, 25);
+    const auto bytes = map_file_bytes(set, 4);
+    const PhotonMapFile file = PhotonMapFile::from_bytes(bytes, "m.kdp");
+    const IrradianceMapView irr = file.irradiance_map();
+    REQUIRE(irr.present());
+    const PhotonMapView& map = irr.photons;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const glm::vec3 normals[] = {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+    const float radius = 0.08f, min_cos = 0.7f;
+    KnnHeap heap{};
+    std::uint32_t found = 0, missed = 0;
+    for (int q = 0; q < 400; ++q) {
+        const glm::vec3 p(u(rng), u(rng) * 0.2f, u(rng));
+        const glm::vec3 n = normals[q % 4];
+        // The nearest photon whose surface agrees, by looking at every one.
+        const SurfacePhotonFilter accept(map, n, min_cos, 0, 0);
+        float best = radius * radius;
+        std::int64_t nearest = -1;
+        for (std::uint32_t j = 0; j < map.photon_count; ++j) {
+            const glm::vec3 d = glm::vec3(map.x[j], map.y[j], map.z[j]) - p;
+            const float d2 = glm::dot(d, d);
+            if (d2 < best && accept(j)) best = d2, nearest = j;
+        }
+        glm::vec3 e(-1.0f);
+        const bool hit = lookup_irradiance(irr, p, n, radius, min_cos, heap, e);
+        INFO("query " << q);
+        REQUIRE(hit == (nearest >= 0));
+        if (!hit) {
+            ++missed;
+            continue;
+        }
+        ++found;
+        // Ties at equal distance may pick either photon: compare distances, then the value.
+        const glm::vec3 d = glm::vec3(map.x[heap.index[0]], map.y[heap.index[0]], map.z[heap.index[0]]) - p;
+        CHECK(glm::dot(d, d) == best);
+        if (heap.index[0] == nearest)
+            for (int c = 0; c < 3; ++c) CHECK(e[c] == irr.irradiance[nearest].rgb[c]);
+    }
+    CHECK(found > 50);
+    CHECK(missed > 50);  // among them the (0, -1, 0) queries: no photon faces down
 }

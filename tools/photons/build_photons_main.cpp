@@ -87,9 +87,10 @@ int main(int argc, char** argv) {
 
         if (!quiet) {
             auto bytes = std::filesystem::file_size(output);
-            std::printf("kdpm-build-photons: %u photons (%u caustic, %u with irradiance), %s, %u nodes, %u leaves, depth %u, "
-                        "largest leaf %u, r %.4g, %.2f s, %.1f MiB -> %s\n",
-                        global.photon_count, caustic.photon_count, built.irradiance.photon_count, balanced ? "balanced" : "VVH",
+            std::printf("kdpm-build-photons: %u photons (%u caustic, %u with irradiance), %s, %u nodes, %u leaves, "
+                        "depth %u, largest leaf %u, r %.4g, %.2f s, %.1f MiB -> %s\n",
+                        global.photon_count, caustic.photon_count, built.irradiance.photon_count,
+                        balanced ? "balanced" : "VVH",
                         global.node_count, global.leaf_count, global.max_depth,
                         global.max_leaf_size, global.query_radius, secs, bytes / 1048576.0,
                         output.c_str());

@@ -10,7 +10,7 @@ const FileKindInfo kKinds[] = {
      "kdpm-build-geometry SCENE -o FILE.kdg"},
     {FileKind::photon_hits, {'K', 'D', 'P', 'M', '-', 'P', 'H', 'H'}, 1, 0, "photon hits", ".kdph",
      "kdpm-shoot-photons SCENE.kdg -o FILE.kdph"},
-    {FileKind::photon_tree, {'K', 'D', 'P', 'M', '-', 'P', 'H', 'T'}, 1, 0, "photon kd-tree", ".kdp",
+    {FileKind::photon_tree, {'K', 'D', 'P', 'M', '-', 'P', 'H', 'T'}, 1, 1, "photon kd-tree", ".kdp",
      "kdpm-build-photons PHOTONS.kdph -o FILE.kdp"},
     {FileKind::test, {'K', 'D', 'P', 'M', '-', 'T', 'S', 'T'}, 1, 0, "test container", ".kdt",
      "the test that wrote it"},

@@ -82,8 +82,10 @@ struct PackedPhotonDirections {
 };
 static_assert(sizeof(PackedPhotonDirections) == 8);
 
-// The two photon maps of one .kdp; each map's sections are base + PhotonTreeField.
-enum class PhotonMapKind : std::uint32_t { global = 0, caustic = 1 };
+// The photon maps of one .kdp; each map's sections are base + PhotonTreeField. The irradiance
+// map (format 1.1, optional) holds a subset of the global map's photons with the irradiance
+// precomputed at each (Christensen 1999), for final gathering's one-lookup gather hits.
+enum class PhotonMapKind : std::uint32_t { global = 0, caustic = 1, irradiance = 2 };
 enum PhotonTreeField : std::uint32_t {
     ptree_field_info = 0,        // PhotonTreeInfo
     ptree_field_nodes = 1,       // KdNode[]
@@ -93,7 +95,17 @@ enum PhotonTreeField : std::uint32_t {
     ptree_field_power = 5,       // u32[] RGBE power
     ptree_field_directions = 6,  // PackedPhotonDirections[]
     ptree_field_flags = 7,       // u32[] photon flags
+    // Irradiance map only:
+    ptree_field_irradiance = 8,  // PrecomputedIrradiance[], in the map's leaf order
+    ptree_field_source = 9,      // u32[]: the photon's index (leaf order) in the global map
 };
+
+// The irradiance (W / m^2, RGB) at a photon, from the global map's k-nearest density estimate
+// over every photon, at the photon's position and stored normal.
+struct PrecomputedIrradiance {
+    float rgb[3];
+};
+static_assert(sizeof(PrecomputedIrradiance) == 12);
 inline constexpr std::uint32_t photon_tree_section(PhotonMapKind map, PhotonTreeField field) {
     return 0x300u + 0x10u * static_cast<std::uint32_t>(map) + static_cast<std::uint32_t>(field);
 }

@@ -8,12 +8,16 @@ namespace {
 
 // The section of each map's field, or "" when `id` is no photon tree section.
 std::string photon_tree_name(std::uint32_t id) {
-    static constexpr const char* kFields[] = {"info", "nodes", "x", "y", "z", "power", "direction", "flags"};
-    static constexpr std::uint32_t kFieldCount = sizeof kFields / sizeof kFields[0];
-    for (PhotonMapKind map : {PhotonMapKind::global, PhotonMapKind::caustic})
-        for (std::uint32_t f = 0; f < kFieldCount; ++f)
+    static constexpr const char* kFields[] = {"info", "nodes", "x", "y", "z", "power", "direction", "flags",
+                                              "irradiance", "source"};
+    static constexpr const char* kMaps[] = {"photon_tree.", "caustic_tree.", "irradiance_tree."};
+    for (PhotonMapKind map : {PhotonMapKind::global, PhotonMapKind::caustic, PhotonMapKind::irradiance}) {
+        // Only the irradiance map has the fields past flags.
+        const std::uint32_t fields = map == PhotonMapKind::irradiance ? 10 : 8;
+        for (std::uint32_t f = 0; f < fields; ++f)
             if (id == photon_tree_section(map, static_cast<PhotonTreeField>(f)))
-                return std::string(map == PhotonMapKind::global ? "photon_tree." : "caustic_tree.") + kFields[f];
+                return std::string(kMaps[static_cast<std::uint32_t>(map)]) + kFields[f];
+    }
     return "";
 }
 

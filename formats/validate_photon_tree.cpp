@@ -15,7 +15,9 @@ namespace {
 // depth-first order no deeper than kMaxPhotonTreeDepth, leaves covering the photons exactly
 // once in order, every photon inside its leaf's cell, finite positions, known flags.
 void validate_map(const ContainerReader& file, PhotonMapKind map) {
-    const std::string label = map == PhotonMapKind::global ? "photon tree" : "caustic tree";
+    const std::string label = map == PhotonMapKind::global    ? "photon tree"
+                              : map == PhotonMapKind::caustic ? "caustic tree"
+                                                              : "irradiance tree";
     auto fail = [&](const std::string& why) { throw FormatError(file.name() + ": " + label + ": " + why); };
     auto id = [&](PhotonTreeField f) { return photon_tree_section(map, f); };
 
@@ -114,12 +116,51 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
         fail("info statistics (leaves, depth, largest leaf) do not match the nodes");
 }
 
+// The irradiance map's own sections (its tree is checked by validate_map): one irradiance and
+// one source index per photon, irradiance finite and >= 0, each source a distinct photon of the
+// global map at the same position.
+void validate_irradiance(const ContainerReader& file) {
+    auto fail = [&](const std::string& why) { throw FormatError(file.name() + ": irradiance tree: " + why); };
+    auto id = [](PhotonMapKind map, PhotonTreeField f) { return photon_tree_section(map, f); };
+    const auto& info = file.record<PhotonTreeInfo>(id(PhotonMapKind::irradiance, ptree_field_info));
+    const auto& global = file.record<PhotonTreeInfo>(id(PhotonMapKind::global, ptree_field_info));
+    auto irradiance = file.section<PrecomputedIrradiance>(id(PhotonMapKind::irradiance, ptree_field_irradiance));
+    auto source = file.section<std::uint32_t>(id(PhotonMapKind::irradiance, ptree_field_source));
+    const std::uint64_t n = info.photon_count;
+    if (irradiance.size() != n || source.size() != n)
+        fail("irradiance and source do not both hold photon_count = " + std::to_string(n) + " entries");
+    if (n > global.photon_count) fail("more photons than the global map");
+    auto x = file.section<float>(id(PhotonMapKind::irradiance, ptree_field_x));
+    auto y = file.section<float>(id(PhotonMapKind::irradiance, ptree_field_y));
+    auto z = file.section<float>(id(PhotonMapKind::irradiance, ptree_field_z));
+    auto gx = file.section<float>(id(PhotonMapKind::global, ptree_field_x));
+    auto gy = file.section<float>(id(PhotonMapKind::global, ptree_field_y));
+    auto gz = file.section<float>(id(PhotonMapKind::global, ptree_field_z));
+    std::vector<bool> used(global.photon_count, false);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        const std::string which = "photon " + std::to_string(i);
+        for (float c : irradiance[i].rgb)
+            if (!std::isfinite(c) || c < 0.0f) fail(which + " has a non-finite or negative irradiance");
+        const std::uint32_t s = source[i];
+        if (s >= global.photon_count)
+            fail(which + " names global photon " + std::to_string(s) + " of " + std::to_string(global.photon_count));
+        if (used[s]) fail(which + " names global photon " + std::to_string(s) + " a second time");
+        used[s] = true;
+        if (x[i] != gx[s] || y[i] != gy[s] || z[i] != gz[s])
+            fail(which + " is not at the position of global photon " + std::to_string(s));
+    }
+}
+
 }  // namespace
 
 void validate_photon_tree_file(const ContainerReader& file, const ValidationOptions&) {
     validate_map(file, PhotonMapKind::global);
     if (file.find(photon_tree_section(PhotonMapKind::caustic, ptree_field_info)))
         validate_map(file, PhotonMapKind::caustic);
+    if (file.find(photon_tree_section(PhotonMapKind::irradiance, ptree_field_info))) {
+        validate_map(file, PhotonMapKind::irradiance);
+        validate_irradiance(file);
+    }
 }
 
 }  // namespace kdpm

@@ -9,7 +9,8 @@
 
 namespace kdpm {
 
-PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOptions& options, Metadata metadata) {
+PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOptions& options, Metadata metadata,
+                                     const IrradiancePrecompute& irradiance) {
     std::vector<PhotonHit> caustic_hits;
     for (const auto& h : set.hits)
         if (h.flags & kPhotonCaustic) caustic_hits.push_back(h);
@@ -22,6 +23,12 @@ PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOp
     PhotonMapBuild out;
     add_photon_tree_sections(out.writer, PhotonMapKind::global, global);
     add_photon_tree_sections(out.writer, PhotonMapKind::caustic, caustic);
+    if (irradiance) {
+        const BuiltIrradianceMap map = build_irradiance_map(global, set.hits, irradiance(global), options);
+        add_irradiance_map_sections(out.writer, map);
+        out.irradiance = map.tree.info;
+        metadata.statistics["irradiance_photons"] = map.tree.info.photon_count;
+    }
     const bool balanced = options.builder == PhotonTreeBuilder::balanced;
     metadata.parameters["builder"] = balanced ? "balanced" : "vvh";
     metadata.parameters["leaf_size"] = std::to_string(options.leaf_size);

@@ -44,4 +44,14 @@ PhotonMapView PhotonMapFile::view(PhotonMapKind map) const {
     return v;
 }
 
+IrradianceMapView PhotonMapFile::irradiance_map() const {
+    IrradianceMapView v;
+    if (!has_map(PhotonMapKind::irradiance)) return v;
+    v.photons = view(PhotonMapKind::irradiance);
+    v.irradiance =
+        reader_.section<PrecomputedIrradiance>(photon_tree_section(PhotonMapKind::irradiance, ptree_field_irradiance))
+            .data();
+    return v;
+}
+
 }  // namespace kdpm

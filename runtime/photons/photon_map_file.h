@@ -7,6 +7,7 @@
 #include "formats/container_reader.h"
 #include "formats/metadata.h"
 #include "formats/photon_layout.h"
+#include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/photon_map_view.h"
 
 namespace kdpm {
@@ -21,6 +22,8 @@ public:
     bool has_map(PhotonMapKind map) const;
     // An empty view (node_count 0) when the map is absent.
     PhotonMapView view(PhotonMapKind map = PhotonMapKind::global) const;
+    // The precomputed irradiance (format 1.1); not present() in files without it.
+    IrradianceMapView irradiance_map() const;
     // A zeroed info when the map is absent.
     PhotonTreeInfo info(PhotonMapKind map = PhotonMapKind::global) const;
     Metadata metadata() const { return reader_.metadata(); }

@@ -9,6 +9,7 @@
 
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/camera.h"
+#include "runtime/render/final_gather_pass.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/path_pass.h"
 #include "runtime/render/photon_gather_pass.h"
@@ -31,6 +32,7 @@ struct FramePlan {
     bool path_trace = false;  // --mode path: one path pass per sample instead of trace/gather/shade
     bool progressive = false;  // --mode sppm: the passes of sppm_loop.h instead of samples
     SppmPlan sppm;
+    bool final_gather = false;  // --mode final-gather: the gather pass sends gather rays (needs gather_photons)
 };
 
 template <class Device>
@@ -93,7 +95,11 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         if (plan.gather_photons) {
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
-            dev.launch(pixels, gather);  // one item per pixel, over its vertices
+            if (plan.final_gather)
+                dev.launch(pixels, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
+                                                          plan.settings.max_depth, plan.epsilon));
+            else
+                dev.launch(pixels, gather);  // one item per pixel, over its vertices
             times.photon_gather_ms += watch.lap_ms();
             report(s, 2);
         }

@@ -11,6 +11,7 @@
 
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
+#include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/render/frame_buffers.h"
@@ -23,6 +24,7 @@ namespace kdpm {
 struct PhotonMaps {
     PhotonMapView global;
     PhotonMapView caustic;
+    IrradianceMapView irradiance;  // the .kdp's precomputed irradiance (final gathering); may be absent
     bool present = false;
     float typical_radius = 0.0f;  // median distance to the 32nd nearest photon (.kdp info); 0: unknown
     bool empty() const { return !present; }
@@ -71,11 +73,11 @@ inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_lig
     pass.global_params.cone_filter = settings.cone_filter;
     pass.global_params.flatten = settings.disc_flatten > 0.0f ? settings.disc_flatten : 0.0f;
     pass.global_params.fixed_radius = settings.fixed_radius;
-    const float k_scale = sqrtf(static_cast<float>(pass.global_params.k) / 32.0f);
     float max_radius = settings.max_radius;
-    if (max_radius < 0.0f && settings.fixed_radius) max_radius = maps.typical_radius * k_scale;
+    if (max_radius < 0.0f && settings.fixed_radius)
+        max_radius = scaled_gather_radius(maps.typical_radius, pass.global_params.k, 1.0f);
     else if (max_radius < 0.0f)
-        max_radius = maps.typical_radius > 0.0f ? kAutoRadiusFactor * maps.typical_radius * k_scale : 0.0f;
+        max_radius = scaled_gather_radius(maps.typical_radius, pass.global_params.k, kAutoRadiusFactor);
     pass.global_params.max_radius = max_radius;
     pass.caustic_params = pass.global_params;
     if (direct_light) {

@@ -28,6 +28,9 @@ public:
         device_photons_ = scene.photons;
         device_photons_.global = upload_photon_map(owned_, scene.photons.global);
         device_photons_.caustic = upload_photon_map(owned_, scene.photons.caustic);
+        device_photons_.irradiance.photons = upload_photon_map(owned_, scene.photons.irradiance.photons);
+        device_photons_.irradiance.irradiance = upload_array(owned_, scene.photons.irradiance.irradiance,
+                                                             scene.photons.irradiance.photons.photon_count);
         const LightPowerTable lights = light_power_table(scene.geometry);
         device_lights_ = lights.selection();
         device_lights_.cdf = upload_array(owned_, lights.cdf.data(), lights.cdf.size());

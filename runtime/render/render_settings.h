@@ -18,13 +18,18 @@ enum class RenderMode : std::uint32_t {
     direct = 2,          // direct light only (no photon map needed)
     path = 3,            // the reference: unbiased path tracing with next-event estimation (no photon map)
     sppm = 4,            // stochastic progressive photon mapping: photons re-shot each pass (no photon map)
+    final_gather = 5,    // direct light by shadow rays + caustics map + gather rays reading the global map
 };
-// photons and direct+photons read a photon map; direct and path do not.
+// photons, direct+photons and final-gather read a photon map; direct and path do not.
 inline bool mode_needs_photons(RenderMode mode) {
-    return mode == RenderMode::photons || mode == RenderMode::direct_photons;
+    return mode == RenderMode::photons || mode == RenderMode::direct_photons || mode == RenderMode::final_gather;
 }
 RenderMode parse_render_mode(std::string_view text);  // throws std::invalid_argument
 const char* render_mode_name(RenderMode mode);
+
+// The most gather rays per diffuse point (mode final-gather): a ray's index shares a 32-bit
+// random-number counter with its vertex.
+inline constexpr std::uint32_t kMaxGatherRays = 65536;
 
 struct RenderSettings {
     std::uint32_t width = 0, height = 0;  // 0: the camera record's
@@ -41,6 +46,7 @@ struct RenderSettings {
     std::uint32_t passes = 16;            // mode sppm: progressive passes (the camera is jittered anew in each)
     std::uint64_t photons_per_pass = 0;   // mode sppm: photon paths shot per pass; 0: one per pixel
     float sppm_radius = 0.0f;             // mode sppm: initial gather radius; 0: from the scene
+    std::uint32_t gather_rays = 64;       // mode final-gather: gather rays per diffuse point and sample
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

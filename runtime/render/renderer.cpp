@@ -18,7 +18,9 @@ RenderMode parse_render_mode(std::string_view text) {
     if (text == "direct") return RenderMode::direct;
     if (text == "path") return RenderMode::path;
     if (text == "sppm") return RenderMode::sppm;
-    throw std::invalid_argument("expected photons, direct+photons, direct, path or sppm, got '" + std::string(text) + "'");
+    if (text == "final-gather") return RenderMode::final_gather;
+    throw std::invalid_argument("expected photons, direct+photons, direct, path, sppm or final-gather, got '" +
+                                std::string(text) + "'");
 }
 
 const char* render_mode_name(RenderMode mode) {
@@ -28,6 +30,7 @@ const char* render_mode_name(RenderMode mode) {
         case RenderMode::direct: return "direct";
         case RenderMode::path: return "path";
         case RenderMode::sppm: return "sppm";
+        case RenderMode::final_gather: return "final-gather";
     }
     return "?";
 }
@@ -125,6 +128,9 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     plan.epsilon = render_ray_offset(scene_.geometry.info);
     plan.direct_light = settings.mode != RenderMode::photons;
     plan.path_trace = settings.mode == RenderMode::path;
+    plan.final_gather = settings.mode == RenderMode::final_gather;
+    if (plan.final_gather && (settings.gather_rays < 1 || settings.gather_rays > kMaxGatherRays))
+        throw std::runtime_error("gather rays must be in 1.." + std::to_string(kMaxGatherRays));
     plan.gather_photons = mode_needs_photons(settings.mode);
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +

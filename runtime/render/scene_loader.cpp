@@ -29,6 +29,7 @@ LoadedScene LoadedScene::load(const std::filesystem::path& geometry,
         scene.files_->photons.emplace(PhotonMapFile::open(*photons));
         scene.views_.photons.global = scene.files_->photons->view(PhotonMapKind::global);
         scene.views_.photons.caustic = scene.files_->photons->view(PhotonMapKind::caustic);
+        scene.views_.photons.irradiance = scene.files_->photons->irradiance_map();
         scene.views_.photons.present = true;
         scene.views_.photons.typical_radius = scene.files_->photons->info(PhotonMapKind::global).query_radius;
     }

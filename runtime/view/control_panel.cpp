@@ -10,7 +10,7 @@ namespace kdpm {
 namespace {
 
 const RenderMode kModes[] = {RenderMode::photons, RenderMode::direct_photons, RenderMode::direct, RenderMode::path,
-                            RenderMode::sppm};
+                            RenderMode::sppm, RenderMode::final_gather};
 const ViewKind kViews[] = {ViewKind::shaded, ViewKind::depth, ViewKind::normal, ViewKind::photon_density};
 const ToneMap kToneMaps[] = {ToneMap::aces, ToneMap::reinhard, ToneMap::none};
 

@@ -46,8 +46,9 @@ void ViewOptions::next_mode(bool have_photons) {
         case RenderMode::photons: mode = RenderMode::direct_photons; break;
         case RenderMode::direct_photons: mode = RenderMode::direct; break;
         case RenderMode::direct: mode = RenderMode::photons; break;
-        case RenderMode::path: mode = RenderMode::photons; break;  // path and sppm are chosen in the panel
-        case RenderMode::sppm: mode = RenderMode::photons; break;
+        case RenderMode::path:  // path, sppm and final-gather are chosen in the panel
+        case RenderMode::sppm:
+        case RenderMode::final_gather: mode = RenderMode::photons; break;
     }
 }
 

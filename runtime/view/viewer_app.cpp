@@ -265,9 +265,11 @@ private:
 
     std::string photons_line() const {
         if (!have_photons_) return "no photon map";
-        char line[160];
-        std::snprintf(line, sizeof line, "%u global + %u caustic photons", photons_.global.photon_count,
-                      photons_.caustic.photon_count);
+        char line[200];
+        // Final gathering falls back to k-nearest estimates at its gather hits without the map.
+        std::snprintf(line, sizeof line, "%u global + %u caustic photons, %s", photons_.global.photon_count,
+                      photons_.caustic.photon_count,
+                      photons_.irradiance.present() ? "irradiance precomputed" : "no precomputed irradiance");
         return line;
     }
 

@@ -7,6 +7,7 @@
 #include "builders/photons/photon_map_writer.h"
 #include "runtime/photons/photon_shooter.h"
 #include "tests/support/run_command.h"
+#include "tools/photons/irradiance_step.h"
 
 namespace kdpm::test {
 
@@ -44,10 +45,12 @@ GpuTestScene build_gpu_test_scene(const std::string& name, std::uint64_t photons
         options.photons = photons;
         ShotPhotons shot = shoot_photons(s.views.geometry, options);
         PhotonHitSet set{shot.info, std::move(shot.hits)};
-        PhotonMapBuild map = build_photon_map_file(set, PhotonTreeOptions{}, Metadata{});
+        PhotonMapBuild map =
+            build_photon_map_file(set, PhotonTreeOptions{}, Metadata{}, every_nth_photon_irradiance(4, 64));
         s.photons.emplace(PhotonMapFile::from_bytes(map.writer.bytes(), name + ".kdp"));
         s.views.photons.global = s.photons->view(PhotonMapKind::global);
         s.views.photons.caustic = s.photons->view(PhotonMapKind::caustic);
+        s.views.photons.irradiance = s.photons->irradiance_map();
         s.views.photons.present = true;
         s.views.photons.typical_radius = s.photons->info(PhotonMapKind::global).query_radius;
     }

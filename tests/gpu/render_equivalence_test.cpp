@@ -146,3 +146,32 @@ TEST_CASE("CUDA renders progressive photon mapping like the CPU", "[gpu][render]
     CHECK(got.aovs.triangle == expected.aovs.triangle);
     CHECK(got.aovs.depth == expected.aovs.depth);
 }
+
+// Gather rays leave in cosine-distributed directions (cosf/sinf, last-place differences between
+// glibc and libdevice), so, like paths, a few of them may go elsewhere: the path tracer's tolerance.
+TEST_CASE("CUDA final-gathers like the CPU, with the precomputed irradiance and without",
+          "[gpu][render][final-gather]") {
+    auto scene = test::build_gpu_test_scene("cornell-box", 50000);
+    REQUIRE(scene.views.photons.irradiance.present());
+    SceneViews without = scene.views;
+    without.photons.irradiance = IrradianceMapView{};
+    for (const SceneViews* views : {&scene.views, &without}) {
+        INFO((views == &without ? "without" : "with") << " the precomputed irradiance");
+        Renderer cpu(*views, BackendKind::cpu);
+        Renderer cuda(*views, BackendKind::cuda);
+        RenderSettings s = settings_for(RenderMode::final_gather, 96, 80);
+        s.gather_rays = 8;
+        const RenderResult expected = cpu.render(s);
+        const RenderResult got = cuda.render(s);
+        const Difference d = compare(expected.linear.rgb, got.linear.rgb);
+        double mean_got = 0;
+        for (float v : got.linear.rgb) mean_got += std::fabs(v);
+        mean_got /= static_cast<double>(got.linear.rgb.size());
+        INFO("mean value " << d.mean_value << " (CUDA " << mean_got << "), mean |diff| " << d.mean_abs
+                           << ", within tolerance " << d.within * 100 << "%");
+        CHECK(d.mean_value > 0.0);
+        CHECK(mean_got == Approx(d.mean_value).epsilon(0.005));
+        CHECK(d.within >= 0.95);
+        CHECK(got.aovs.triangle == expected.aovs.triangle);
+    }
+}

@@ -1,18 +1,17 @@
 // The furnace test: inside a closed box whose walls all emit Le and reflect with albedo rho,
 // the radiance is the same everywhere, Le * (1 + rho + rho^2 + ...) = Le / (1 - rho) (truncated
 // after the last photon bounce). The box is built with the geometry builder and the photons
-// are shot and organised in-process with the photon libraries, then both lighting modes render.
+// are shot and organised in-process with the photon libraries, then the photon modes render
+// (final gathering with and without the precomputed irradiance).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <optional>
 
-#include "tests/support/built_tree_view.h"
 #include "builders/geometry/geometry_file_builder.h"
-#include "builders/photons/photon_tree_builder.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/photons/photon_shooter.h"
 #include "runtime/render/renderer.h"
+#include "tests/runtime/in_memory_photons.h"
 
 using namespace kdpm;
 
@@ -29,7 +28,7 @@ void add_quad(Scene& s, glm::vec3 p0, glm::vec3 e1, glm::vec3 e2) {
 
 }  // namespace
 
-TEST_CASE("a closed emitting diffuse box renders Le over one minus rho in both modes", "[render][furnace]") {
+TEST_CASE("a closed emitting diffuse box renders Le over one minus rho in every photon mode", "[render][furnace]") {
     const float le = 1.0f, rho = 0.5f;
     const std::uint32_t bounces = 12;
     Scene scene;
@@ -55,34 +54,37 @@ TEST_CASE("a closed emitting diffuse box renders Le over one minus rho in both m
     GeometryBuild build = build_geometry_file(scene, KdBuildParams{});
     GeometryFile file = GeometryFile::from_bytes(build.writer.bytes(), "furnace.kdg");
 
-    ShootOptions shoot;
-    shoot.photons = 200000;
-    shoot.max_bounces = bounces;
-    ShotPhotons shot = shoot_photons(file.view(), shoot);
-    REQUIRE(!shot.hits.empty());
-    BuiltPhotonTree global = build_photon_tree(shot.hits, PhotonTreeOptions{}, shot.info.emitted_count, bounces);
-    std::vector<PhotonHit> caustic_hits;  // no specular surfaces: stays empty
-    BuiltPhotonTree caustic = build_photon_tree(caustic_hits, PhotonTreeOptions{}, shot.info.emitted_count, bounces);
-
+    const test::InMemoryPhotons photons(file.view(), 200000, bounces, 200);
     SceneViews views;
     views.geometry = file.view();
     views.camera = file.camera();
-    views.photons.global = view_of(global);
-    views.photons.caustic = view_of(caustic);
-    views.photons.present = true;
+    // Final gathering reads the irradiance precomputed at every 4th photon, or without it the
+    // k-nearest estimate at each gather hit; one diffuse bounce more either way.
+    views.photons = photons.maps(false);
+    SceneViews with_irradiance = views;
+    with_irradiance.photons = photons.maps(true);
+    REQUIRE(with_irradiance.photons.irradiance.present());
 
     const double expected = le * (1.0 - std::pow(rho, bounces + 2)) / (1.0 - rho);
+    const double expected_gather = le * (1.0 - std::pow(rho, bounces + 3)) / (1.0 - rho);
     Renderer renderer(views, BackendKind::cpu);
-    for (RenderMode mode : {RenderMode::photons, RenderMode::direct_photons}) {
+    Renderer gather_renderer(with_irradiance, BackendKind::cpu);
+    for (RenderMode mode : {RenderMode::photons, RenderMode::direct_photons, RenderMode::final_gather}) {
+      for (Renderer* which : {&renderer, &gather_renderer}) {
+        if (which == &gather_renderer && mode != RenderMode::final_gather) continue;
         RenderSettings settings;
         settings.mode = mode;
         settings.k = 200;
         settings.light_samples = 16;
-        RenderResult r = renderer.render(settings);
+        settings.gather_rays = 16;
+        RenderResult r = which->render(settings);
         double mean = 0;
         for (std::size_t i = 0; i < r.linear.pixel_count(); ++i) mean += r.linear.rgb[i * 3 + 1];
         mean /= static_cast<double>(r.linear.pixel_count());
-        INFO("mode " << render_mode_name(mode) << ": mean " << mean << ", expected " << expected);
-        CHECK(mean == Approx(expected).epsilon(0.03));
+        const double want = mode == RenderMode::final_gather ? expected_gather : expected;
+        INFO("mode " << render_mode_name(mode) << (which == &gather_renderer ? " with" : " without")
+                     << " precomputed irradiance: mean " << mean << ", expected " << want);
+        CHECK(mean == Approx(want).epsilon(0.03));
+      }
     }
 }

@@ -5,13 +5,17 @@
 #include "runtime/backend/thread_limit.h"
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"
+#include "tests/runtime/in_memory_photons.h"
 
 using namespace kdpm;
 
 TEST_CASE("CPU renders are identical with 1 and 2 threads", "[render][determinism]") {
     test::BuiltScene scene(800, 3, 48, 32);
+    const test::InMemoryPhotons photons(scene.views.geometry, 20000, 3, 32);
+    scene.views.photons = photons.maps();
     RenderSettings settings;
-    settings.mode = GENERATE(RenderMode::direct, RenderMode::path, RenderMode::sppm);
+    settings.mode = GENERATE(RenderMode::direct, RenderMode::path, RenderMode::sppm, RenderMode::final_gather);
+    settings.gather_rays = 4;
     INFO("mode " << static_cast<int>(settings.mode));
     settings.spp = 2;
     settings.light_samples = 4;

@@ -1,23 +1,18 @@
 #pragma once
 // The kernels' view of a photon tree still in memory (tests), as PhotonMapFile
 // gives for a mapped .kdp.
-#include "builders/photons/photon_tree_builder.h"
-#include "runtime/photons/photon_map_view.h"
+#include "builders/photons/irradiance_map_builder.h"
+#include "runtime/photons/irradiance_lookup.h"
+#include "tools/photons/built_photon_map_view.h"
 
 namespace kdpm {
 
-inline PhotonMapView view_of(const BuiltPhotonTree& t) {
-    PhotonMapView v;
-    v.nodes = t.nodes.data();
-    v.node_count = static_cast<std::uint32_t>(t.nodes.size());
-    v.photon_count = t.info.photon_count;
-    v.x = t.x.data();
-    v.y = t.y.data();
-    v.z = t.z.data();
-    v.power = t.power.data();
-    v.directions = t.directions.data();
-    v.flags = t.flags.data();
-    v.emitted_count = t.info.emitted_count;
+inline PhotonMapView view_of(const BuiltPhotonTree& t) { return photon_map_view_of(t); }
+
+inline IrradianceMapView view_of(const BuiltIrradianceMap& m) {
+    IrradianceMapView v;
+    v.photons = photon_map_view_of(m.tree);
+    v.irradiance = m.irradiance.data();
     return v;
 }
 

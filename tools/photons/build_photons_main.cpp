@@ -14,6 +14,7 @@
 #include "formats/container_reader.h"
 #include "formats/container_writer.h"
 #include "runtime/backend/thread_limit.h"
+#include "tools/photons/irradiance_step.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
@@ -23,7 +24,7 @@ using namespace kdpm;
 int main(int argc, char** argv) {
     std::string input, output;
     bool balanced = false, quiet = false;
-    int leaf_size = 16, threads = 0;
+    int leaf_size = 16, threads = 0, irradiance_every = 4, irradiance_k = 64;
     double radius = 0.0;
     cli::Args args("kdpm-build-photons", "Builds the photon kd-tree file (.kdp) from photon hits (.kdph).");
     args.positional("PHOTONS.kdph", &input, "photon hits from kdpm-shoot-photons")
@@ -31,6 +32,11 @@ int main(int argc, char** argv) {
         .flag("balanced", &balanced, "classic balanced median-split tree instead of VVH")
         .option("leaf-size", &leaf_size, "N", "most photons per leaf (default 16)", 1, 4096)
         .option("radius", &radius, "R", "VVH expected query radius (default: estimated for k = 32)", 0.0, 1e30)
+        .option("irradiance-every", &irradiance_every, "N",
+                "precompute the irradiance at every N-th photon for final gathering (default 4; 0: none)", 0,
+                1 << 30)
+        .option("irradiance-k", &irradiance_k, "K", "photons per precomputed irradiance estimate (default 64)", 1,
+                static_cast<int>(kMaxGatherK))
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");
     args.short_name('o', "output");
@@ -65,7 +71,14 @@ int main(int argc, char** argv) {
         meta.tool_version = kdpm_version();
         meta.source_path = std::filesystem::path(input).filename().string();
         meta.source_hash = hash_file(input);
-        PhotonMapBuild built = build_photon_map_file(set, options, meta);
+        IrradiancePrecompute irradiance;
+        if (irradiance_every > 0) {
+            meta.parameters["irradiance_every"] = std::to_string(irradiance_every);
+            meta.parameters["irradiance_k"] = std::to_string(irradiance_k);
+            irradiance = every_nth_photon_irradiance(static_cast<std::uint32_t>(irradiance_every),
+                                                     static_cast<std::uint32_t>(irradiance_k));
+        }
+        PhotonMapBuild built = build_photon_map_file(set, options, meta, irradiance);
         progress.finish();
         const PhotonTreeInfo& global = built.global;
         const PhotonTreeInfo& caustic = built.caustic;
@@ -74,9 +87,10 @@ int main(int argc, char** argv) {
 
         if (!quiet) {
             auto bytes = std::filesystem::file_size(output);
-            std::printf("kdpm-build-photons: %u photons (%u caustic), %s, %u nodes, %u leaves, depth %u, "
-                        "largest leaf %u, r %.4g, %.2f s, %.1f MiB -> %s\n",
-                        global.photon_count, caustic.photon_count, balanced ? "balanced" : "VVH",
+            std::printf("kdpm-build-photons: %u photons (%u caustic, %u with irradiance), %s, %u nodes, %u leaves, "
+                        "depth %u, largest leaf %u, r %.4g, %.2f s, %.1f MiB -> %s\n",
+                        global.photon_count, caustic.photon_count, built.irradiance.photon_count,
+                        balanced ? "balanced" : "VVH",
                         global.node_count, global.leaf_count, global.max_depth,
                         global.max_leaf_size, global.query_radius, secs, bytes / 1048576.0,
                         output.c_str());

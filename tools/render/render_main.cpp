@@ -45,6 +45,7 @@ int run(int argc, char** argv) {
     RenderSettings settings;
     int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, max_bounces = 0, threads = 0;
     int passes = 0, photons_per_pass = 0;  // 0: not given
+    int gather_rays = 64;
     double exposure = 0.0, max_radius = -1.0, disc = 0.0, sppm_radius = 0.0;
     bool quiet = false;
     BackendRequest backend = BackendRequest::automatic;
@@ -77,8 +78,8 @@ int run(int argc, char** argv) {
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
         .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, path (the "
-                "path-traced reference; no photon map needed) or sppm (progressive photon mapping, photons shot anew "
-                "each pass; no photon map needed)",
+                "path-traced reference; no photon map needed), sppm (progressive photon mapping, photons shot anew "
+                "each pass; no photon map needed) or final-gather (gather rays read the photon map)",
                 [&](const std::string& v) { settings.mode = parse_render_mode(v); })
         .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
                 4096)
@@ -92,6 +93,9 @@ int run(int argc, char** argv) {
         .option("sppm-radius", &sppm_radius, "R",
                 "mode sppm: initial gather radius (default: the photon map's typical radius, else 1/100 of the "
                 "scene's diagonal)", 1e-30, 1e30)
+        .option("gather-rays", &gather_rays, "N",
+                "mode final-gather: cosine-distributed gather rays per diffuse point and sample (default 64)", 1,
+                static_cast<int>(kMaxGatherRays))
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
@@ -139,6 +143,12 @@ int run(int argc, char** argv) {
     if (passes) settings.passes = static_cast<std::uint32_t>(passes);
     settings.photons_per_pass = static_cast<std::uint64_t>(photons_per_pass);
     settings.sppm_radius = static_cast<float>(sppm_radius);
+    settings.gather_rays = static_cast<std::uint32_t>(gather_rays);
+    if (settings.mode == RenderMode::final_gather && !scene.views().photons.empty() &&
+        !scene.views().photons.irradiance.present() && !quiet)
+        std::cerr << "kdpm-render: " << photon_path
+                  << " has no precomputed irradiance: gather hits use the k-nearest estimate (slower; rebuild it "
+                     "with kdpm-build-photons)\n";
     settings.post.exposure_stops = static_cast<float>(exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };

@@ -26,7 +26,8 @@ int run(int argc, char** argv) {
         .option("width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
         .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
         .option("k", &k, "N", "photons per radiance estimate, 2..256 (default: the scene card's)", 2, 256)
-        .option("mode", "MODE", "photons, direct+photons, direct, path or sppm (default: photons with a .kdp, else direct)",
+        .option("mode", "MODE",
+                "photons, direct+photons, direct, path, sppm or final-gather (default: photons with a .kdp, else direct)",
                 [&](const std::string& v) { cfg.mode = parse_render_mode(v); })
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { cfg.backend = parse_backend_request(v); })

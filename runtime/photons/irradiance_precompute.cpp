@@ -1,0 +1,50 @@
+#include "runtime/photons/irradiance_precompute.h"
+
+#include <glm/vec3.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "runtime/photons/irradiance_lookup.h"
+#include "runtime/shading/constants.h"
+
+namespace kdpm {
+
+RadianceEstimateParams irradiance_estimate_params(std::uint32_t k, float typical_radius_32) {
+    RadianceEstimateParams params;
+    params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    params.max_radius = scaled_gather_radius(typical_radius_32, params.k, kIrradianceRadiusFactor);
+    return params;
+}
+
+std::vector<std::uint32_t> every_nth_photon(std::uint32_t photon_count, std::uint32_t every) {
+    std::vector<std::uint32_t> slots;
+    if (every == 0) return slots;
+    for (std::uint64_t s = 0; s < photon_count; s += every) slots.push_back(static_cast<std::uint32_t>(s));
+    return slots;
+}
+
+PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uint32_t slot,
+                                           const RadianceEstimateParams& params, KnnHeap& heap) {
+    const glm::vec3 position(global.x[slot], global.y[slot], global.z[slot]);
+    float n[3];
+    decode_octahedral(global.directions[slot].normal, n);
+    // With albedo pi the estimate's f_r is 1: the radiance estimate is the irradiance.
+    const glm::vec3 e =
+        estimate_radiance(global, position, glm::vec3(n[0], n[1], n[2]), glm::vec3(kPi), params, heap).radiance;
+    return PrecomputedIrradiance{{e.x, e.y, e.z}};
+}
+
+std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& global,
+                                                         const std::vector<std::uint32_t>& slots,
+                                                         const RadianceEstimateParams& params) {
+    std::vector<PrecomputedIrradiance> out(slots.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          KnnHeap heap;
+                          for (std::size_t i = r.begin(); i != r.end(); ++i)
+                              out[i] = irradiance_at_photon(global, slots[i], params, heap);
+                      });
+    return out;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,145 @@
+#pragma once
+// Pass 2 of a frame sample in mode final-gather (Jensen's final gathering): at each diffuse
+// vertex, the caustics from the caustic map plus the indirect light of N cosine-distributed
+// gather rays. A gather ray is followed through mirrors and glass to its first diffuse hit,
+// where the light leaving toward the vertex is albedo / pi times the irradiance there: the
+// value precomputed at the nearest chosen photon of the .kdp's irradiance map (one k = 1
+// search), or, without that map or without a chosen photon near the hit, the global map's
+// k-nearest estimate. The gather hit's estimate counts every photon (direct ones included),
+// so the vertex sees light of one diffuse bounce more than the photon map's bounce count.
+// Emitters met by gather rays add nothing: direct light comes from the shadow rays of the
+// shade pass, and light through mirrors and glass from the caustic map.
+#include <cstdint>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "formats/geometry_layout.h"
+#include "formats/host_device.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/kd_traversal.h"
+#include "runtime/photons/irradiance_lookup.h"
+#include "runtime/photons/radiance_estimate.h"
+#include "runtime/render/frame_buffers.h"
+#include "runtime/render/photon_gather_pass.h"
+#include "runtime/render/render_settings.h"
+#include "runtime/render/tile_order.h"
+#include "runtime/render/trace_pass.h"
+#include "runtime/shading/color.h"
+#include "runtime/shading/counter_random.h"
+#include "runtime/shading/diffuse.h"
+#include "runtime/shading/ray_offset.h"
+#include "runtime/shading/specular.h"
+#include "runtime/shading/surface_point.h"
+
+namespace kdpm {
+
+struct FinalGatherPass {
+    static constexpr std::uint32_t kSeed = 0x67617468u;  // its own stream, apart from paths and photons
+
+    GeometryView geometry;
+    FrameBuffersView frame;
+    PhotonMaps maps;
+    RadianceEstimateParams hit_params;      // the k-nearest estimate at a gather hit: every photon
+    RadianceEstimateParams caustic_params;  // the caustic map at the pixel's vertices
+    float lookup_radius = 0.0f;             // nearest chosen photon within this (<= 0: unlimited)
+    std::uint32_t sample = 0;
+    std::uint32_t gather_rays = 64;
+    std::uint32_t max_depth = 8;            // rays in a run of mirror/glass bounces, as in the other modes
+    float epsilon = 1e-4f;
+
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
+        const std::uint32_t count = frame.vertex_count[pixel];
+        KnnHeap heap;
+        for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
+            const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+            const DiffuseVertex& v = frame.vertices[slot];
+            glm::vec3 l(0.0f);
+            if (maps.caustic.node_count > 0)
+                l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
+                         .radiance;
+            const std::uint32_t rays =
+                gather_rays < 1 ? 1 : (gather_rays > kMaxGatherRays ? kMaxGatherRays : gather_rays);
+            glm::vec3 sum(0.0f);
+            for (std::uint32_t r = 0; r < rays; ++r) sum += gather(v, (pixel << 32) | sample, (i << 16) | r, heap);
+            // Cosine sampling: f_r L cos / pdf = albedo L per ray.
+            l += v.albedo * sum / static_cast<float>(rays);
+            frame.gathered[slot] = l;
+        }
+    }
+
+    // The radiance arriving at the vertex along one gather ray.
+    KDPM_HD glm::vec3 gather(const DiffuseVertex& v, std::uint64_t path, std::uint32_t ray_index, KnnHeap& heap) const {
+        auto random = [&](std::uint32_t dimension) { return counter_random(kSeed, path, ray_index, dimension); };
+        glm::vec3 direction = cosine_direction(v.shading_normal, random(0), random(1));
+        // A shading normal tilted from the geometric one can send the ray into the surface.
+        if (glm::dot(direction, v.geometric_normal) <= 0.0f) return glm::vec3(0.0f);
+        glm::vec3 origin = offset_origin(v.position, v.geometric_normal, epsilon, true);
+        glm::vec3 throughput(1.0f);
+        for (std::uint32_t depth = 0; depth < max_depth; ++depth) {
+            const Ray ray{origin, 0.0f, direction, std::numeric_limits<float>::infinity()};
+            const Hit hit = closest_hit(geometry, ray);
+            if (!hit.found()) return glm::vec3(0.0f);
+            const SurfacePoint s = surface_at(geometry, ray, hit);
+            const MaterialRecord m = material_of(geometry, hit.triangle);
+            if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
+                throughput *= to_vec3(m.specular);
+                direction = reflect_dir(direction, s.shading_normal);
+                origin = offset_origin(s.position, s.geometric_normal, epsilon, true);
+            } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
+                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
+                glm::vec3 refracted(0.0f);
+                const float f = fresnel_refract(direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
+                // Reflect with probability f, else refract: the Fresnel weights cancel.
+                if (random(2 + depth) < f) {
+                    direction = reflect_dir(direction, s.shading_normal);
+                    origin = offset_origin(s.position, s.geometric_normal, epsilon, true);
+                } else {
+                    throughput *= to_vec3(m.transmission);
+                    direction = refracted;
+                    origin = offset_origin(s.position, s.geometric_normal, epsilon, false);
+                }
+            } else {
+                return throughput * diffuse_radiance(s, to_vec3(m.diffuse), heap);
+            }
+            if (!(max_component(throughput) > 0.0f)) return glm::vec3(0.0f);
+        }
+        return glm::vec3(0.0f);
+    }
+
+    // The light leaving a diffuse gather hit (see the file comment).
+    KDPM_HD glm::vec3 diffuse_radiance(const SurfacePoint& s, glm::vec3 albedo, KnnHeap& heap) const {
+        glm::vec3 irradiance(0.0f);
+        if (maps.irradiance.present() &&
+            lookup_irradiance(maps.irradiance, s.position, s.shading_normal, lookup_radius, hit_params.min_normal_cos,
+                              heap, irradiance))
+            return lambert_brdf(albedo) * irradiance;
+        return estimate_radiance(maps.global, s.position, s.shading_normal, albedo, hit_params, heap).radiance;
+    }
+};
+
+// From the gather pass the settings made (its maps and estimate parameters): the hit estimate
+// counts every photon of the global map, the nearest chosen photon is looked for as far as the
+// k-nearest search would go.
+inline FinalGatherPass make_final_gather_pass(const GeometryView& geometry, const PhotonGatherPass& gather,
+                                              std::uint32_t sample, std::uint32_t gather_rays,
+                                              std::uint32_t max_depth, float epsilon) {
+    FinalGatherPass pass;
+    pass.geometry = geometry;
+    pass.frame = gather.frame;
+    pass.maps = gather.maps;
+    pass.hit_params = gather.global_params;
+    pass.hit_params.min_bounce = 0;
+    pass.hit_params.exclude_flags = 0;
+    pass.caustic_params = gather.caustic_params;
+    pass.lookup_radius = gather.global_params.max_radius;
+    pass.sample = sample;
+    pass.gather_rays = gather_rays;
+    pass.max_depth = max_depth;
+    pass.epsilon = epsilon;
+    return pass;
+}
+
+}  // namespace kdpm

@@ -13,6 +13,7 @@
 #include "builders/geometry/sah_kd_builder.h"
 #include "builders/geometry/scene_card.h"
 #include "builders/geometry/texture_import.h"
+#include "builders/geometry/texture_ppm.h"
 #include "formats/format_error.h"
 #include "formats/section_ids.h"
 #include "runtime/geometry/geometry_file.h"
@@ -177,4 +178,39 @@ TEST_CASE("geometry files of format 1.0, without texture sections, still load", 
     CHECK(file.view().texture_count == 0);
     const MaterialRecord m = material_of(file.view(), Hit{1.0f, 0, 0.2f, 0.2f});
     CHECK(m.diffuse[1] == 0.5f);
+}
+
+TEST_CASE("kdpm's PPM reader (builds without OpenImageIO) reads the shipped checker as OpenImageIO does", "[texture][geometry]") {
+    const std::filesystem::path checker = test::source_path("scenes/textured-quad/checker.ppm");
+    std::string why;
+    const auto ours = read_ppm_texture(checker, why);
+    const auto oiio = read_texture_image(checker, why);
+    REQUIRE(ours);
+    REQUIRE(oiio);
+    REQUIRE(ours->width == 4);
+    REQUIRE(ours->height == 4);
+    REQUIRE(oiio->texels.size() == ours->texels.size());
+    for (std::size_t i = 0; i < ours->texels.size(); ++i)
+        for (int c = 0; c < 3; ++c) CHECK(ours->texels[i].rgb[c] == Approx(oiio->texels[i].rgb[c]));
+    // Bottom-left stored texel = the file's bottom-left pixel (x 0, row 3 from the top: green).
+    CHECK(ours->texels[0].rgb[1] == 1.0f);
+    CHECK(ours->texels[0].rgb[0] == 0.0f);
+
+    // A binary P6 with 16-bit samples, and broken files.
+    test::TempDir dir;
+    std::string p6 = "P6\n# two pixels\n2 1\n65535\n";
+    for (const int v : {65535, 0, 0, 0, 32768, 65535}) p6 += static_cast<char>(v >> 8), p6 += static_cast<char>(v & 255);
+    write_text(dir / "two.ppm", p6);
+    const auto two = read_ppm_texture(dir / "two.ppm", why);
+    REQUIRE(two);
+    CHECK(two->texels[0].rgb[0] == 1.0f);
+    CHECK(two->texels[1].rgb[1] == Approx(srgb_to_linear(32768.0f / 65535.0f)));
+    CHECK(two->texels[1].rgb[2] == 1.0f);
+    for (const std::string bad : {"P6\n2 1\n255\nab", "P3\n2 1\n255\n1 2 3 4 5", "P3\n2 1\n255\n1 2 3 4 5 300", "P5\n1 1\n255\na",
+                                  "P3\n0 1\n255\n", "P3\n99999 1\n255\n"}) {
+        write_text(dir / "bad.ppm", bad);
+        INFO(bad);
+        CHECK_FALSE(read_ppm_texture(dir / "bad.ppm", why));
+        CHECK(why.find('\n') == std::string::npos);
+    }
 }

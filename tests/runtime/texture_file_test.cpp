@@ -187,12 +187,12 @@ TEST_CASE("kdpm's PPM reader (builds without OpenImageIO) reads the shipped chec
     const auto oiio = read_texture_image(checker, why);
     REQUIRE(ours);
     REQUIRE(oiio);
-    REQUIRE(ours->width == 4);
-    REQUIRE(ours->height == 4);
+    REQUIRE(ours->width == 16);
+    REQUIRE(ours->height == 16);
     REQUIRE(oiio->texels.size() == ours->texels.size());
     for (std::size_t i = 0; i < ours->texels.size(); ++i)
         for (int c = 0; c < 3; ++c) CHECK(ours->texels[i].rgb[c] == Approx(oiio->texels[i].rgb[c]));
-    // Bottom-left stored texel = the file's bottom-left pixel (x 0, row 3 from the top: green).
+    // Bottom-left stored texel = the file's bottom-left pixel (x 0, row 15 from the top: square (0, 3), green).
     CHECK(ours->texels[0].rgb[1] == 1.0f);
     CHECK(ours->texels[0].rgb[0] == 0.0f);
 

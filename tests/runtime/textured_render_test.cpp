@@ -1,8 +1,8 @@
 // The shipped textured scene (scenes/textured-quad): a quad filling the frame whose map_Kd is a
-// 4x4 red/green checker repeated twice each way. Rendered with direct light and with the path
-// tracer, every one of the 8x8 squares shows the colour of its texel, the checker's top-left
-// texel in the image's top-left corner; pixels wider than the texels read coarser mip levels;
-// photons bounce off the texture's colour.
+// red/green checker of 4x4 squares (16x16 texels) repeated twice each way. Rendered with direct
+// light and with the path tracer, every one of the 8x8 squares shows the colour of its square
+// of the texture, the texture's top-left square in the image's top-left corner; pixels wider
+// than the texels read coarser mip levels; photons bounce off the texture's colour.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -18,7 +18,7 @@ using namespace kdpm;
 
 namespace {
 
-// Red where the texel's column plus its row counted from the top of checker.ppm is even.
+// Red where the square's column plus its row counted from the top of checker.ppm is even.
 bool red_square(std::uint32_t square_x, std::uint32_t square_y) { return (square_x + square_y) % 2 == 0; }
 
 void check_checker(const Image& image, std::uint32_t size) {
@@ -31,9 +31,8 @@ void check_checker(const Image& image, std::uint32_t size) {
             INFO("square " << sx << ", " << sy << ": " << rgb[0] << " " << rgb[1] << " " << rgb[2]);
             CHECK(rgb[0] + rgb[1] > 0.01f);  // lit
             CHECK(rgb[2] == 0.0f);           // neither texel colour has blue
-            // Bilinear filtering mixes in at most 22% of the other colour a jittered sample away
-            // from the square's centre.
-            const bool red = rgb[0] > 2.5f * rgb[1], green = rgb[1] > 2.5f * rgb[0];
+            // A sample anywhere in the pixel reads texels of its square only.
+            const bool red = rgb[0] > 0.0f && rgb[1] == 0.0f, green = rgb[1] > 0.0f && rgb[0] == 0.0f;
             CHECK((red_square(sx, sy) ? red : green));
             right += red_square(sx, sy) ? red : green;
         }
@@ -71,9 +70,9 @@ TEST_CASE("camera rays filter the texture over their pixel: a checker finer than
     views.geometry = file.view();
     views.camera = file.camera();
     Renderer renderer(views, BackendKind::cpu);
-    // 3 x 3 pixels over 8 x 8 texels: each pixel covers 2.7 x 2.7 texels, so it reads mip levels
-    // 1 and 2, which are uniform (0.5, 0.5, 0); level 0 at the pixel centres (texel coordinates
-    // 0.83, 3.5, 6.2) would be mostly one colour in 8 of the 9 pixels.
+    // 3 x 3 pixels over 32 x 32 texels (8 x 8 squares): each pixel covers 10.7 x 10.7 texels, so
+    // it reads mip levels 3 and 4, which are uniform (0.5, 0.5, 0) (a level-3 texel averages
+    // 2 x 2 squares); level 0 at the pixel centres would read one square's colour.
     RenderSettings settings;
     settings.width = settings.height = 3;
     settings.mode = RenderMode::direct;

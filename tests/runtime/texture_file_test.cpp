@@ -214,3 +214,37 @@ TEST_CASE("kdpm's PPM reader (builds without OpenImageIO) reads the shipped chec
         CHECK(why.find('\n') == std::string::npos);
     }
 }
+
+TEST_CASE("a glTF base colour texture imports with its uvs the same way up", "[texture][geometry]") {
+    // A unit quad in z = 0; glTF puts uv (0, 0) at the image's top-left corner, so the quad's
+    // top-left vertex (0, 1, 0) has uv (0, 0).
+    test::TempDir dir;
+    write_png(dir / "checker.png");
+    const float positions[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const float uvs[4][2] = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    const std::uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
+    std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    bin.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
+    bin.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    write_text(dir / "quad.bin", bin);
+    write_text(dir / "quad.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],
+"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}}}],
+"textures":[{"source":0}],"images":[{"uri":"checker.png"}],
+"buffers":[{"uri":"quad.bin","byteLength":92}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":32},
+{"buffer":0,"byteOffset":80,"byteLength":12}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+{"bufferView":1,"componentType":5126,"count":4,"type":"VEC2"},{"bufferView":2,"componentType":5123,"count":6,"type":"SCALAR"}]})");
+    const Scene scene = load_scene_input(dir / "quad.gltf");
+    INFO((scene.warnings.empty() ? "" : scene.warnings[0]));
+    REQUIRE(scene.textures.size() == 1);
+    REQUIRE(scene.triangles.size() == 2);
+    const std::vector<std::uint8_t> bytes = file_bytes(scene);
+    const GeometryFile file = GeometryFile::from_bytes(bytes, "gltf.kdg");
+    // Quad point (0.375, 0.75), on the second triangle (0,0,0)-(1,1,0)-(0,1,0) at barycentrics
+    // (0.375, 0.375): the centre of texel (1, 0) of the image's top row.
+    const MaterialRecord m = material_of(file.view(), Hit{1.0f, 1, 0.375f, 0.375f});
+    for (int c = 0; c < 3; ++c)
+        CHECK(m.diffuse[c] == Approx(srgb_to_linear(png_byte(1, 0, c) / 255.0f)).epsilon(1e-5));
+}

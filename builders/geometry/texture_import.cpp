@@ -7,6 +7,10 @@
 
 namespace kdpm {
 
+namespace {
+constexpr std::size_t kWarningsPerTexture = 3;
+}  // namespace
+
 float srgb_to_linear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
@@ -14,6 +18,7 @@ float srgb_to_linear(float c) {
 void load_textures(Scene& scene) {
     if (scene.texture_paths.empty()) return;
     std::map<std::string, std::uint32_t> loaded;  // path -> 1 + texture index, 0 when unusable
+    std::vector<std::string> unusable;            // "path: why"
     for (std::size_t m = 0; m < scene.materials.size() && m < scene.texture_paths.size(); ++m) {
         const std::string& path = scene.texture_paths[m];
         if (path.empty()) continue;
@@ -34,9 +39,17 @@ void load_textures(Scene& scene) {
                 scene.textures.push_back(t);
                 it->second = static_cast<std::uint32_t>(scene.textures.size());
             }
-            if (it->second == 0) scene.warnings.push_back("texture " + path + ": " + why + "; using the material's diffuse colour");
+            if (it->second == 0) unusable.push_back(path + ": " + why);
         }
         scene.materials[m].diffuse_texture = it->second;
+    }
+    // One line per texture, or one line for them all when there are many (a mesh copied
+    // without its texture folder).
+    if (unusable.size() <= kWarningsPerTexture) {
+        for (const std::string& u : unusable) scene.warnings.push_back("texture " + u + "; using the material's diffuse colour");
+    } else {
+        scene.warnings.push_back(std::to_string(unusable.size()) + " textures cannot be used (the first: " + unusable[0] +
+                                 "); their materials use their diffuse colours");
     }
 }
 

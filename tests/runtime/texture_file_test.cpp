@@ -164,6 +164,22 @@ TEST_CASE("a missing or unreadable texture is one warning and the material keeps
     }
 }
 
+TEST_CASE("many unusable textures are one warning line for them all", "[texture][geometry]") {
+    test::TempDir dir;
+    std::string mtl, obj = "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n";
+    for (int i = 0; i < 5; ++i) {
+        mtl += "newmtl m" + std::to_string(i) + "\nKd 0.5 0.5 0.5\nmap_Kd gone" + std::to_string(i) + ".png\n";
+        obj += "usemtl m" + std::to_string(i) + "\nf 1/1 2/2 3/3\n";
+    }
+    write_text(dir / "quad.mtl", mtl);
+    write_text(dir / "quad.obj", obj);
+    const Scene scene = load_scene_input(dir / "quad.obj");
+    REQUIRE(scene.warnings.size() == 1);
+    CHECK_THAT(scene.warnings[0], Catch::StartsWith("5 textures cannot be used (the first: ") && Catch::Contains("gone0.png"));
+    for (const MaterialRecord& m : scene.materials) CHECK(m.diffuse_texture == 0);
+    CHECK(scene.textures.empty());
+}
+
 TEST_CASE("geometry files of format 1.0, without texture sections, still load", "[texture][geometry]") {
     test::TempDir dir;
     write_text(dir / "quad.mtl", "newmtl plain\nKd 0.25 0.5 0.75\n");

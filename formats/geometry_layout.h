@@ -53,11 +53,54 @@ struct MaterialRecord {
     float specular[3];       // mirror reflectance
     float ior;               // glass index of refraction
     float transmission[3];   // glass transmittance
-    float reserved0;
+    std::uint32_t diffuse_texture;  // 0: none; else 1 + index into geometry.textures (the albedo)
     float emission[3];       // emitted radiance (MTL Ke, glTF emissive)
     float reserved1;
 };
 static_assert(sizeof(MaterialRecord) == 64);
+
+// Per-vertex texture coordinates of a triangle (same order as geometry.triangles; optional).
+struct TriangleUVs {
+    float uv[3][2];  // (u, v) at v0, v1, v2; v = 0 is the image's bottom row
+};
+static_assert(sizeof(TriangleUVs) == 24);
+
+// A mip-mapped linear RGB texture: `levels` images from width x height down to 1 x 1, each
+// half the previous (rounded down, at least 1), stored one after another from texel
+// `first_texel` of geometry.texels, rows bottom to top (row 0 is v = 0).
+struct TextureRecord {
+    std::uint32_t width;
+    std::uint32_t height;
+    std::uint32_t levels;
+    std::uint32_t reserved0;
+    std::uint64_t first_texel;   // index into geometry.texels
+    std::uint64_t texel_count;   // texels of all levels
+};
+static_assert(sizeof(TextureRecord) == 32);
+
+// One linear RGB texel of geometry.texels.
+struct Texel {
+    float rgb[3];
+};
+static_assert(sizeof(Texel) == 12);
+
+// Largest texture side the builder writes and the validator accepts.
+inline constexpr std::uint32_t kMaxTextureSide = 16384;
+
+// Mip levels of a full chain down to 1 x 1, and the size of one level.
+constexpr std::uint32_t texture_level_count(std::uint32_t width, std::uint32_t height) {
+    std::uint32_t levels = 1;
+    while (width > 1 || height > 1) {
+        width = width > 1 ? width / 2 : 1;
+        height = height > 1 ? height / 2 : 1;
+        ++levels;
+    }
+    return levels;
+}
+constexpr std::uint32_t texture_level_side(std::uint32_t side, std::uint32_t level) {
+    const std::uint32_t s = level < 32 ? side >> level : 0;
+    return s > 0 ? s : 1;
+}
 
 enum class LightShape : std::uint32_t { triangle = 0, parallelogram = 1 };
 

@@ -34,6 +34,9 @@ std::string name(std::uint32_t id) {
         case geo_materials: return "geometry.materials";
         case geo_lights: return "geometry.lights";
         case geo_camera: return "geometry.camera";
+        case geo_uvs: return "geometry.uvs";
+        case geo_textures: return "geometry.textures";
+        case geo_texels: return "geometry.texels";
         case hits_info: return "hits.info";
         case hits_photons: return "hits.photons";
         default: return photon_tree_name(id);

@@ -17,6 +17,9 @@ inline constexpr std::uint32_t geo_normals = 0x104;    // TriangleNormals[] shad
 inline constexpr std::uint32_t geo_materials = 0x105;  // MaterialRecord[]
 inline constexpr std::uint32_t geo_lights = 0x106;     // AreaLightRecord[]
 inline constexpr std::uint32_t geo_camera = 0x107;     // CameraRecord, one record
+inline constexpr std::uint32_t geo_uvs = 0x108;        // TriangleUVs[] texture coordinates (1.1)
+inline constexpr std::uint32_t geo_textures = 0x109;   // TextureRecord[] mip-mapped diffuse textures (1.1)
+inline constexpr std::uint32_t geo_texels = 0x10A;     // Texel[] of every texture's levels (1.1)
 
 // photon hits (.kdph)
 inline constexpr std::uint32_t hits_info = 0x200;      // PhotonHitsInfo, one record

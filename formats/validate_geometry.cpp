@@ -212,6 +212,45 @@ void check_coverage(const ContainerReader& file, const GeometryInfo& info, const
     }
 }
 
+// Texture coordinates finite (the lookup wraps them, but NaN has no place to wrap to).
+void check_uvs(const ContainerReader& file, std::span<const TriangleUVs> uvs, std::size_t tri_count) {
+    if (uvs.size() != tri_count) fail(file, "geometry.uvs must hold one record per triangle");
+    for (std::size_t i = 0; i < uvs.size(); ++i)
+        for (const auto& corner : uvs[i].uv)
+            if (!std::isfinite(corner[0]) || !std::isfinite(corner[1]))
+                fail(file, "triangle " + std::to_string(i) + " has a texture coordinate that is not finite");
+}
+
+// Textures: sides in range, a full mip chain, levels laid end to end in texture order over
+// exactly the texel array, every texel finite and non-negative; material texture indices in range.
+void check_textures(const ContainerReader& file, std::span<const TextureRecord> textures, std::span<const Texel> texels,
+                    std::span<const MaterialRecord> materials) {
+    std::uint64_t next = 0;
+    for (std::size_t i = 0; i < textures.size(); ++i) {
+        const TextureRecord& t = textures[i];
+        const std::string which = "texture " + std::to_string(i);
+        if (t.width == 0 || t.height == 0 || t.width > kMaxTextureSide || t.height > kMaxTextureSide)
+            fail(file, which + " has a side outside 1.." + std::to_string(kMaxTextureSide));
+        if (t.levels != texture_level_count(t.width, t.height))
+            fail(file, which + " does not hold a full mip chain");
+        std::uint64_t count = 0;
+        for (std::uint32_t l = 0; l < t.levels; ++l)
+            count += std::uint64_t{texture_level_side(t.width, l)} * texture_level_side(t.height, l);
+        if (t.texel_count != count) fail(file, which + " has a texel count that does not match its levels");
+        if (t.first_texel != next) fail(file, which + " does not start where the previous texture ends");
+        if (t.reserved0 != 0) fail(file, which + " has a non-zero reserved field");
+        next += count;
+    }
+    if (next != texels.size()) fail(file, "geometry.texels does not hold exactly the textures' texels");
+    for (std::size_t i = 0; i < texels.size(); ++i)
+        for (float c : texels[i].rgb)
+            if (!(c >= 0.0f) || !std::isfinite(c))
+                fail(file, "texel " + std::to_string(i) + " is negative or not finite");
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].diffuse_texture > textures.size())
+            fail(file, "material " + std::to_string(i) + " names a texture out of range");
+}
+
 // The element type each section's writer declares: a reader must not take u32s for records.
 void check_element_types(const ContainerReader& file) {
     const std::pair<std::uint32_t, ElementType> expected[] = {
@@ -219,7 +258,8 @@ void check_element_types(const ContainerReader& file) {
         {section::geo_leaf_indices, ElementType::u32}, {section::geo_triangles, ElementType::record},
         {section::geo_normals, ElementType::record},   {section::geo_materials, ElementType::record},
         {section::geo_lights, ElementType::record},    {section::geo_camera, ElementType::record},
-        {section::metadata, ElementType::text}};
+        {section::geo_uvs, ElementType::record},       {section::geo_textures, ElementType::record},
+        {section::geo_texels, ElementType::record},    {section::metadata, ElementType::text}};
     for (const auto& [id, type] : expected)
         if (const SectionEntry* e = file.find(id); e && e->element_type != static_cast<std::uint32_t>(type))
             fail(file, "section " + ContainerReader::section_label(id) + " has element type " +
@@ -248,6 +288,13 @@ void validate_geometry_file(const ContainerReader& file, const ValidationOptions
     check_info(file, info, t);
     check_tree(file, info, t);
     check_indices(file, t, materials, lights, normals.has_value());
+    if (const auto uvs = file.optional_section<TriangleUVs>(section::geo_uvs)) check_uvs(file, *uvs, t.tris.size());
+    const auto textures = file.optional_section<TextureRecord>(section::geo_textures);
+    const auto texels = file.optional_section<Texel>(section::geo_texels);
+    if (textures.has_value() != texels.has_value())
+        fail(file, "geometry.textures and geometry.texels must come together");
+    check_textures(file, textures.value_or(std::span<const TextureRecord>{}), texels.value_or(std::span<const Texel>{}),
+                   materials);
     if (options.exhaustive) check_coverage(file, info, t);
 }
 

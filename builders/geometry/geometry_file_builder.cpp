@@ -25,6 +25,12 @@ GeometryBuild build_geometry_file(const Scene& scene, const KdBuildParams& param
     if (!scene.normals.empty() && scene.normals.size() != scene.triangles.size())
         throw FormatError("scene has " + std::to_string(scene.normals.size()) + " normal records for " +
                           std::to_string(scene.triangles.size()) + " triangles");
+    if (!scene.uvs.empty() && scene.uvs.size() != scene.triangles.size())
+        throw FormatError("scene has " + std::to_string(scene.uvs.size()) + " texture coordinate records for " +
+                          std::to_string(scene.triangles.size()) + " triangles");
+    if (!scene.textures.empty() && scene.uvs.empty()) throw FormatError("scene has textures but no texture coordinates");
+    for (const MaterialRecord& m : scene.materials)
+        if (m.diffuse_texture > scene.textures.size()) throw FormatError("material texture index out of range");
     if (scene.triangles.size() > 0xfffffffeu) throw FormatError("too many triangles");
     for (const TriangleRecord& t : scene.triangles)
         if (t.material >= scene.materials.size()) throw FormatError("triangle material index out of range");
@@ -78,6 +84,10 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     meta.statistics["sah_cost"] = s.sah_cost;
     meta.statistics["materials"] = static_cast<double>(scene->materials.size());
     meta.statistics["lights"] = static_cast<double>(scene->lights.size());
+    if (!scene->textures.empty()) {
+        meta.statistics["textures"] = static_cast<double>(scene->textures.size());
+        meta.statistics["texels"] = static_cast<double>(scene->texels.size());
+    }
     if (tree.repeated_triangles > 0) meta.statistics["repeated_triangles"] = static_cast<double>(tree.repeated_triangles);
 
     ContainerWriter w(FileKind::geometry);
@@ -90,6 +100,12 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     w.add(section::geo_materials, ElementType::record, scene->materials);
     w.add(section::geo_lights, ElementType::record, scene->lights);
     w.add_record(section::geo_camera, scene->camera);
+    // Texture coordinates only matter to a textured material; untextured scenes stay as before.
+    if (!scene->textures.empty()) {
+        w.add(section::geo_uvs, ElementType::record, scene->uvs);
+        w.add(section::geo_textures, ElementType::record, scene->textures);
+        w.add(section::geo_texels, ElementType::record, scene->texels);
+    }
     return w;
 }
 

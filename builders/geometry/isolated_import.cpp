@@ -31,6 +31,12 @@ void put_vector(std::string& out, const std::vector<T>& v) {
     put_bytes(out, v.data(), v.size() * sizeof(T));
 }
 
+void put_strings(std::string& out, const std::vector<std::string>& v) {
+    const std::uint64_t count = v.size();
+    put_bytes(out, &count, sizeof count);
+    for (const std::string& s : v) put_bytes(out, s.data(), s.size());
+}
+
 struct Reader {
     const std::string& in;
     std::size_t at = 1;
@@ -52,6 +58,13 @@ struct Reader {
         if (!s.empty()) std::memcpy(v.data(), s.data(), s.size());
         return v;
     }
+    std::vector<std::string> strings() {
+        const std::vector<std::uint64_t> count = vector<std::uint64_t>();
+        if (count.size() != 1 || count[0] > in.size()) throw FormatError("the mesh importer's reply is malformed");
+        std::vector<std::string> v;
+        for (std::uint64_t i = 0; i < count[0]; ++i) v.push_back(bytes());
+        return v;
+    }
 };
 
 std::string encode(const Scene& s) {
@@ -60,6 +73,9 @@ std::string encode(const Scene& s) {
     put_vector(out, s.normals);
     put_vector(out, s.materials);
     put_vector(out, s.lights);
+    put_vector(out, s.uvs);
+    put_strings(out, s.texture_paths);
+    put_strings(out, s.warnings);
     put_bytes(out, s.source_name.data(), s.source_name.size());
     put_bytes(out, s.source_hash.data(), s.source_hash.size());
     return out;
@@ -72,6 +88,9 @@ Scene decode(const std::string& in) {
     s.normals = r.vector<TriangleNormals>();
     s.materials = r.vector<MaterialRecord>();
     s.lights = r.vector<AreaLightRecord>();
+    s.uvs = r.vector<TriangleUVs>();
+    s.texture_paths = r.strings();
+    s.warnings = r.strings();
     s.source_name = r.bytes();
     s.source_hash = r.bytes();
     return s;

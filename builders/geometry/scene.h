@@ -13,6 +13,11 @@ struct Scene {
     std::vector<TriangleRecord> triangles;   // source order; source_index = position
     std::vector<TriangleNormals> normals;    // empty, or one per triangle
     std::vector<MaterialRecord> materials;
+    std::vector<TriangleUVs> uvs;            // empty, or one per triangle
+    std::vector<std::string> texture_paths;  // empty, or one per material: its diffuse texture file ("" none)
+    std::vector<TextureRecord> textures;     // read by load_textures(); materials point at them
+    std::vector<Texel> texels;
+    std::vector<std::string> warnings;       // one line each, for the tool to print
     std::vector<AreaLightRecord> lights;
     CameraRecord camera{};
     bool has_camera = false;                 // false: frame_camera() picks one from the bounds

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "builders/geometry/isolated_import.h"
+#include "builders/geometry/texture_import.h"
 #include "formats/camera_check.h"
 #include "formats/format_error.h"
 #include "formats/scene_limits.h"
@@ -183,6 +184,7 @@ fs::path card_mesh_path(const fs::path& card_path) {
 Scene load_scene_input(const fs::path& input) {
     if (!is_scene_card(input)) {
         Scene scene = import_mesh_isolated(input);
+        load_textures(scene);
         check_scene_extent(scene);
         frame_camera(scene);
         check_framed_camera(scene, input.string());
@@ -191,6 +193,7 @@ Scene load_scene_input(const fs::path& input) {
     const fs::path mesh = card_mesh_path(input);
     const Card card = read_card(input);
     Scene scene = import_mesh_isolated(mesh);
+    load_textures(scene);
     check_scene_extent(scene);
     apply_card(card, scene);
     return scene;

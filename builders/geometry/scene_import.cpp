@@ -36,7 +36,27 @@ void set3(float (&dst)[3], const aiColor3D& c) {
 bool is_black(const aiColor3D& c) { return !(c.r > 0.0f || c.g > 0.0f || c.b > 0.0f); }
 
 // OBJ/MTL: illum 3 (or Ks with black Kd) is a mirror, illum 4/6/7/9 with Tf or Ni a glass.
-// glTF: transmission factor makes a glass. Textures are not used: Kd is the albedo.
+// glTF: transmission factor makes a glass. A diffuse texture, when one is read, replaces Kd.
+// The material's diffuse (OBJ map_Kd) or base colour (glTF) texture file, resolved against the
+// mesh's folder; "" when it has none or the texture is embedded in the mesh (not supported: the
+// builder warns and uses the colour).
+std::string diffuse_texture_path(const aiMaterial& m, const std::filesystem::path& mesh_dir, std::vector<std::string>& warnings) {
+    aiString name;
+    if (m.GetTexture(aiTextureType_DIFFUSE, 0, &name) != AI_SUCCESS &&
+        m.GetTexture(aiTextureType_BASE_COLOR, 0, &name) != AI_SUCCESS)
+        return "";
+    std::string file(name.C_Str());
+    if (file.empty()) return "";
+    if (file[0] == '*') {
+        warnings.push_back("material " + std::string(m.GetName().C_Str()) +
+                           ": embedded textures are not read; using its diffuse colour");
+        return "";
+    }
+    std::replace(file.begin(), file.end(), '\\', '/');  // MTL files written on Windows
+    const std::filesystem::path p(file);
+    return (p.is_absolute() || mesh_dir.empty() ? p : mesh_dir / p).lexically_normal().string();
+}
+
 MaterialRecord convert_material(const aiMaterial& m) {
     MaterialRecord r{};
     aiColor3D kd(0.8f, 0.8f, 0.8f), ks(0, 0, 0), ke(0, 0, 0), tf(0, 0, 0);
@@ -103,6 +123,7 @@ struct Walker {
             if (face.mNumIndices != 3) continue;  // points and lines
             float p[3][3];
             TriangleNormals normals{};
+            TriangleUVs uvs{};
             bool usable_normals = m.HasNormals();
             for (int k = 0; k < 3; ++k) {
                 const unsigned idx = face.mIndices[k];
@@ -119,14 +140,24 @@ struct Walker {
                     if (!std::isfinite(nn.x + nn.y + nn.z) || nn.SquareLength() < 0.5f) usable_normals = false;
                     normals.n[k][0] = nn.x, normals.n[k][1] = nn.y, normals.n[k][2] = nn.z;
                 }
+                if (m.HasTextureCoords(0)) {
+                    const aiVector3D t = m.mTextureCoords[0][idx];
+                    // A non-finite coordinate has no texel: it reads the texture's corner.
+                    uvs.uv[k][0] = std::isfinite(t.x) ? t.x : 0.0f;
+                    uvs.uv[k][1] = std::isfinite(t.y) ? t.y : 0.0f;
+                    has_uvs = true;
+                }
             }
             const auto index = static_cast<std::uint32_t>(scene.triangles.size());
             TriangleRecord t = make_triangle(p[0], p[1], p[2], material, index);
             if (usable_normals) t.flags |= kTriangleHasNormals;
             scene.triangles.push_back(t);
             scene.normals.push_back(normals);
+            scene.uvs.push_back(uvs);
         }
     }
+
+    bool has_uvs = false;
 };
 
 // A mesh path must name a regular, non-empty file: say which it is not (a device such as
@@ -149,7 +180,8 @@ namespace {
 
 // The scene of an Assimp import (null when it failed): materials, triangles in source order,
 // emissive triangles as lights. `name` prefixes every message.
-Scene convert_scene(const Assimp::Importer& importer, const aiScene* ai, const std::string& name) {
+Scene convert_scene(const Assimp::Importer& importer, const aiScene* ai, const std::string& name,
+                    const std::filesystem::path& mesh_dir) {
     if (!ai || !ai->mRootNode || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         std::string why = importer.GetErrorString();
         std::replace(why.begin(), why.end(), '\n', ' ');
@@ -157,9 +189,16 @@ Scene convert_scene(const Assimp::Importer& importer, const aiScene* ai, const s
     }
     Scene scene;
     try {
-        for (unsigned i = 0; i < ai->mNumMaterials; ++i) scene.materials.push_back(convert_material(*ai->mMaterials[i]));
+        for (unsigned i = 0; i < ai->mNumMaterials; ++i) {
+            scene.materials.push_back(convert_material(*ai->mMaterials[i]));
+            scene.texture_paths.push_back(diffuse_texture_path(*ai->mMaterials[i], mesh_dir, scene.warnings));
+        }
         if (scene.materials.empty()) scene.materials.push_back(MaterialRecord{{0.8f, 0.8f, 0.8f}, 0, {}, 1.0f, {}, 0, {}, 0});
-        Walker{*ai, scene}.walk(*ai->mRootNode);
+        if (std::all_of(scene.texture_paths.begin(), scene.texture_paths.end(), [](const std::string& p) { return p.empty(); }))
+            scene.texture_paths.clear();
+        Walker walker{*ai, scene};
+        walker.walk(*ai->mRootNode);
+        if (!walker.has_uvs) scene.uvs.clear();
     } catch (const FormatError& e) {
         throw FormatError(name + ": " + e.what());
     }
@@ -180,7 +219,7 @@ Scene import_mesh(const std::filesystem::path& path) {
     // On a large stack: Assimp's importers recurse once per nesting level of the file.
     const aiScene* ai = nullptr;
     run_with_large_stack([&] { ai = importer.ReadFile(path.string(), aiProcess_Triangulate | aiProcess_ValidateDataStructure); });
-    Scene scene = convert_scene(importer, ai, path.string());
+    Scene scene = convert_scene(importer, ai, path.string(), path.parent_path());
     scene.source_name = path.filename().string();
     scene.source_hash = hash_file(path.string());
     return scene;
@@ -195,7 +234,7 @@ Scene import_mesh_from_memory(std::string_view bytes, const std::string& extensi
     run_with_large_stack([&] {
         ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate | aiProcess_ValidateDataStructure, extension.c_str());
     }, std::size_t{64} << 20);
-    Scene scene = convert_scene(importer, ai, name);
+    Scene scene = convert_scene(importer, ai, name, {});
     scene.source_name = name;
     return scene;
 }

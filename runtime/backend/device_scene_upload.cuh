@@ -27,6 +27,9 @@ inline GeometryView upload_geometry(std::vector<DeviceBuffer>& owned, const Geom
     d.normals = upload_array(owned, h.normals, h.normals ? h.triangle_count : 0);
     d.materials = upload_array(owned, h.materials, h.material_count);
     d.lights = upload_array(owned, h.lights, h.light_count);
+    d.uvs = upload_array(owned, h.uvs, h.uvs ? h.triangle_count : 0);
+    d.textures = upload_array(owned, h.textures, h.texture_count);
+    d.texels = upload_array(owned, h.texels, h.texel_count);
     return d;
 }
 

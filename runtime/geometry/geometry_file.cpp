@@ -36,6 +36,16 @@ GeometryFile::GeometryFile(ContainerReader reader) : reader_(std::move(reader)) 
     view_.material_count = static_cast<std::uint32_t>(mats.size());
     view_.lights = lights.data();
     view_.light_count = static_cast<std::uint32_t>(lights.size());
+    const auto uvs = reader_.optional_section<TriangleUVs>(section::geo_uvs);
+    const auto textures = reader_.optional_section<TextureRecord>(section::geo_textures);
+    const auto texels = reader_.optional_section<Texel>(section::geo_texels);
+    view_.uvs = uvs && !uvs->empty() ? uvs->data() : nullptr;
+    if (textures && texels && !textures->empty()) {
+        view_.textures = textures->data();
+        view_.texture_count = static_cast<std::uint32_t>(textures->size());
+        view_.texels = texels->data();
+        view_.texel_count = texels->size();
+    }
     view_.info = reader_.record<GeometryInfo>(section::geo_info);
     camera_ = reader_.record<CameraRecord>(section::geo_camera);
 }

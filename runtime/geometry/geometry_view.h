@@ -24,6 +24,11 @@ struct GeometryView {
     std::uint32_t material_count = 0;
     const AreaLightRecord* lights = nullptr;
     std::uint32_t light_count = 0;
+    const TriangleUVs* uvs = nullptr;          // nullptr when the file has no texture coordinates
+    const TextureRecord* textures = nullptr;   // MaterialRecord::diffuse_texture - 1 indexes these
+    std::uint32_t texture_count = 0;
+    const Texel* texels = nullptr;
+    std::uint64_t texel_count = 0;
     GeometryInfo info{};  // a copy: bounds, counts and scene defaults
 };
 

@@ -80,7 +80,7 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
         const glm::vec3 ng = geometric_normal(tri);
         const bool front = glm::dot(direction, ng) < 0.0f;
         const glm::vec3 n = front ? ng : -ng;  // the side the photon arrived from
-        const MaterialRecord m = material_of(g, hit.triangle);
+        const MaterialRecord m = material_of(g, hit);
         const auto kind = static_cast<MaterialKind>(m.kind);
         const std::uint32_t stream = bounce + 1;
         const float u_rr = rnd(stream, 0);

@@ -46,6 +46,9 @@ struct PinholeCamera {
         return cam;
     }
 
+    // The angle one pixel subtends (radians, small-angle): a camera ray's footprint is t times it.
+    KDPM_HD float pixel_spread() const { return 2.0f * glm::length(up) / static_cast<float>(height); }
+
     // Ray through pixel (x, y) (row 0 at the top) for sample s of `samples`.
     KDPM_HD CameraRay ray(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
         float jx = 0.5f, jy = 0.5f;

@@ -83,7 +83,7 @@ struct FinalGatherPass {
             const Hit hit = closest_hit(geometry, ray);
             if (!hit.found()) return glm::vec3(0.0f);
             const SurfacePoint s = surface_at(geometry, ray, hit);
-            const MaterialRecord m = material_of(geometry, hit.triangle);
+            const MaterialRecord m = material_of(geometry, hit);
             if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
                 throughput *= to_vec3(m.specular);
                 direction = reflect_dir(direction, s.shading_normal);

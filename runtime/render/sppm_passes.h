@@ -90,7 +90,9 @@ struct SppmVisiblePass {
             if (vertex == 0) write_first_hit_aovs(geometry, frame, pass, pixel, ray, hit);
             if (!hit.found()) break;
             const SurfacePoint s = surface_at(geometry, ray, hit);
-            const MaterialRecord m = material_of(geometry, hit.triangle);
+            // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
+            const float footprint = vertex == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
+            const MaterialRecord m = material_of(geometry, hit, footprint);
             if (s.front) radiance += throughput * to_vec3(m.emission);
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);
             if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {

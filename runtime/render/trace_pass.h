@@ -75,7 +75,9 @@ struct TracePass {
             }
             if (!hit.found()) continue;
             const SurfacePoint s = surface_at(geometry, ray, hit);
-            const MaterialRecord m = material_of(geometry, hit.triangle);
+            // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
+            const float footprint = r.depth == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
+            const MaterialRecord m = material_of(geometry, hit, footprint);
             if (s.front) emitted += r.throughput * to_vec3(m.emission);
 
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);

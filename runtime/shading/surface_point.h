@@ -10,6 +10,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/ray.h"
 #include "runtime/geometry/surface_normal.h"
+#include "runtime/shading/texture_lookup.h"
 
 namespace kdpm {
 
@@ -34,14 +35,24 @@ KDPM_HD KDPM_INLINE SurfacePoint surface_at(const GeometryView& g, const Ray& ra
     return s;
 }
 
-// The triangle's material; mid grey for an index past the table (a hand-built scene without
-// materials; a loaded file's indices are all checked).
-KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& g, std::uint32_t triangle) {
-    const std::uint32_t m = g.triangles[triangle].material;
-    if (m < g.material_count) return g.materials[m];
-    MaterialRecord grey{};
-    grey.diffuse[0] = grey.diffuse[1] = grey.diffuse[2] = 0.5f;
-    return grey;
+// The material at a hit, its diffuse colour read from its texture when it has one (the one
+// place every pass and the photon shooter take the albedo from); mid grey for an index past the
+// table (a hand-built scene without materials; a loaded file's indices are all checked).
+// `uv_footprint`: the filter width in texture coordinates, 0 when unknown (finest level).
+KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& g, const Hit& hit, float uv_footprint = 0.0f) {
+    const std::uint32_t index = g.triangles[hit.triangle].material;
+    MaterialRecord m{};
+    if (index < g.material_count) {
+        m = g.materials[index];
+    } else {
+        m.diffuse[0] = m.diffuse[1] = m.diffuse[2] = 0.5f;
+        return m;
+    }
+    if (const TextureRecord* t = diffuse_texture_of(g, m)) {
+        const glm::vec3 albedo = texture_lookup(g.texels, *t, uv_at(g.uvs[hit.triangle], hit.u, hit.v), uv_footprint);
+        m.diffuse[0] = albedo.x, m.diffuse[1] = albedo.y, m.diffuse[2] = albedo.z;
+    }
+    return m;
 }
 
 }  // namespace kdpm

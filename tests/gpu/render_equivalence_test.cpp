@@ -175,3 +175,24 @@ TEST_CASE("CUDA final-gathers like the CPU, with the precomputed irradiance and 
         CHECK(got.aovs.triangle == expected.aovs.triangle);
     }
 }
+
+// The textured quad (its checker read by OpenImageIO, or by kdpm's PPM reader in the bundle):
+// texture lookups, mip levels from the camera footprint and the textured photon bounces run on
+// the device from the uploaded texture sections.
+TEST_CASE("CUDA renders the textured quad like the CPU, in every mode", "[gpu][render][texture]") {
+    auto scene = test::build_gpu_test_scene("textured-quad", 20000);
+    REQUIRE(scene.views.geometry.texture_count == 1);
+    Renderer cpu(scene.views, BackendKind::cpu);
+    Renderer cuda(scene.views, BackendKind::cuda);
+    for (std::uint32_t size : {64u, 3u}) {  // 3 x 3: pixels wider than the texels read coarser levels
+        for (RenderMode mode : {RenderMode::photons, RenderMode::direct_photons, RenderMode::direct}) {
+            INFO("mode " << render_mode_name(mode) << ", " << size << " pixels");
+            const RenderSettings s = settings_for(mode, size, size);
+            const Difference d = compare(cpu.render(s).linear.rgb, cuda.render(s).linear.rgb);
+            INFO("mean value " << d.mean_value << ", mean |diff| " << d.mean_abs << ", within " << d.within * 100 << "%");
+            CHECK(d.mean_value > 0.0);
+            CHECK(d.mean_abs <= 1e-4 * d.mean_value);
+            CHECK(d.within >= 0.999);
+        }
+    }
+}

@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
         ThreadLimit limit(threads);
         const auto start = std::chrono::steady_clock::now();
         Scene scene = load_scene_input(input);
+        if (!quiet)
+            for (const std::string& w : scene.warnings) std::fprintf(stderr, "kdpm-build-geometry: warning: %s\n", w.c_str());
         const auto imported = std::chrono::steady_clock::now();
         GeometryBuild build = [&] {
             cli::Progress progress("building kd-tree", quiet);

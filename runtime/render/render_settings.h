@@ -43,6 +43,8 @@ struct RenderSettings {
     std::uint32_t max_depth = 8;          // mirror/glass bounces followed
     std::uint32_t max_bounces = 0;        // mode path: diffuse vertices per path; 0: unlimited (roulette)
     std::uint32_t gather_rays = 64;       // mode final-gather: gather rays per diffuse point and sample
+    bool irradiance_cache = true;         // mode final-gather: gather only at cache records (CPU backend)
+    float ic_accuracy = 0.2f;             // the cache's error bound a: records are used where e_i < a
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

@@ -53,21 +53,24 @@ struct FinalGatherPass {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
         const std::uint32_t count = frame.vertex_count[pixel];
         KnnHeap heap;
-        for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
-            const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
-            const DiffuseVertex& v = frame.vertices[slot];
-            glm::vec3 l(0.0f);
-            if (maps.caustic.node_count > 0)
-                l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
-                         .radiance;
-            const std::uint32_t rays =
-                gather_rays < 1 ? 1 : (gather_rays > kMaxGatherRays ? kMaxGatherRays : gather_rays);
-            glm::vec3 sum(0.0f);
-            for (std::uint32_t r = 0; r < rays; ++r) sum += gather(v, (pixel << 32) | sample, (i << 16) | r, heap);
-            // Cosine sampling: f_r L cos / pdf = albedo L per ray.
-            l += v.albedo * sum / static_cast<float>(rays);
-            frame.gathered[slot] = l;
-        }
+        for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) gather_vertex(pixel, i, heap);
+    }
+
+    // Caustics plus the gather rays' indirect light at the pixel's vertex i, into frame.gathered.
+    KDPM_HD void gather_vertex(std::uint64_t pixel, std::uint32_t i, KnnHeap& heap) const {
+        const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+        const DiffuseVertex& v = frame.vertices[slot];
+        glm::vec3 l(0.0f);
+        if (maps.caustic.node_count > 0)
+            l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
+                     .radiance;
+        const std::uint32_t rays =
+            gather_rays < 1 ? 1 : (gather_rays > kMaxGatherRays ? kMaxGatherRays : gather_rays);
+        glm::vec3 sum(0.0f);
+        for (std::uint32_t r = 0; r < rays; ++r) sum += gather(v, (pixel << 32) | sample, (i << 16) | r, heap);
+        // Cosine sampling: f_r L cos / pdf = albedo L per ray.
+        l += v.albedo * sum / static_cast<float>(rays);
+        frame.gathered[slot] = l;
     }
 
     // The radiance arriving at the vertex along one gather ray.
@@ -76,12 +79,23 @@ struct FinalGatherPass {
         glm::vec3 direction = cosine_direction(v.shading_normal, random(0), random(1));
         // A shading normal tilted from the geometric one can send the ray into the surface.
         if (glm::dot(direction, v.geometric_normal) <= 0.0f) return glm::vec3(0.0f);
+        float distance = 0.0f;
+        return follow(v, direction, path, ray_index, heap, distance);
+    }
+
+    // The radiance arriving at the vertex from `direction`, and the distance to the first
+    // surface that way (infinity on a miss; irradiance caching's record radius).
+    KDPM_HD glm::vec3 follow(const DiffuseVertex& v, glm::vec3 direction, std::uint64_t path, std::uint32_t ray_index,
+                             KnnHeap& heap, float& distance) const {
+        auto random = [&](std::uint32_t dimension) { return counter_random(kSeed, path, ray_index, dimension); };
+        distance = std::numeric_limits<float>::infinity();
         glm::vec3 origin = offset_origin(v.position, v.geometric_normal, epsilon, true);
         glm::vec3 throughput(1.0f);
         for (std::uint32_t depth = 0; depth < max_depth; ++depth) {
             const Ray ray{origin, 0.0f, direction, std::numeric_limits<float>::infinity()};
             const Hit hit = closest_hit(geometry, ray);
             if (!hit.found()) return glm::vec3(0.0f);
+            if (depth == 0) distance = hit.t;
             const SurfacePoint s = surface_at(geometry, ray, hit);
             const MaterialRecord m = material_of(geometry, hit);
             if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {

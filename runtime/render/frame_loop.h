@@ -11,6 +11,7 @@
 #include "runtime/render/camera.h"
 #include "runtime/render/final_gather_pass.h"
 #include "runtime/render/frame_buffers.h"
+#include "runtime/render/irradiance_cache.h"
 #include "runtime/render/path_pass.h"
 #include "runtime/render/photon_gather_pass.h"
 #include "runtime/render/render_settings.h"
@@ -33,6 +34,8 @@ struct FramePlan {
     bool progressive = false;  // --mode sppm: the passes of sppm_loop.h instead of samples
     SppmPlan sppm;
     bool final_gather = false;  // --mode final-gather: the gather pass sends gather rays (needs gather_photons)
+    bool irradiance_cache = false;  // final-gather: gather rays only at cache records (CPU backend)
+    float cache_min_radius = 0.0f, cache_max_radius = 1e30f;  // clamp of the records' R_i (scene units)
 };
 
 template <class Device>
@@ -86,6 +89,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         times.ray_tracing_ms += watch.lap_ms();
         report(s, 3);
     }
+    IrradianceCache cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius);
     for (std::uint32_t s = 0; s < spp && !plan.path_trace; ++s) {
         TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
         dev.launch(pixels, trace);
@@ -95,7 +99,10 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         if (plan.gather_photons) {
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
-            if (plan.final_gather)
+            if (plan.final_gather && plan.irradiance_cache)
+                run_cached_gather(dev, cache, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
+                                                                     plan.settings.max_depth, plan.epsilon));
+            else if (plan.final_gather)
                 dev.launch(pixels, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
                                                           plan.settings.max_depth, plan.epsilon));
             else
@@ -110,6 +117,9 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         times.shading_ms += watch.lap_ms();
         report(s, 3);
     }
+
+    times.cache_records = cache.tree.records().size();
+    times.cache_points = cache.points;
 
     std::vector<glm::vec3> sums;
     dev.to_host(accum, sums);

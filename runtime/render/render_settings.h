@@ -47,6 +47,8 @@ struct RenderSettings {
     std::uint64_t photons_per_pass = 0;   // mode sppm: photon paths shot per pass; 0: one per pixel
     float sppm_radius = 0.0f;             // mode sppm: initial gather radius; 0: from the scene
     std::uint32_t gather_rays = 64;       // mode final-gather: gather rays per diffuse point and sample
+    bool irradiance_cache = true;         // mode final-gather: gather only at cache records (CPU backend)
+    float ic_accuracy = 0.2f;             // the cache's error bound a: records are used where e_i < a
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

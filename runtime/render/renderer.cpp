@@ -131,6 +131,18 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     plan.final_gather = settings.mode == RenderMode::final_gather;
     if (plan.final_gather && (settings.gather_rays < 1 || settings.gather_rays > kMaxGatherRays))
         throw std::runtime_error("gather rays must be in 1.." + std::to_string(kMaxGatherRays));
+    if (plan.final_gather && settings.irradiance_cache && !(settings.ic_accuracy > 0.0f && settings.ic_accuracy <= 1.0f))
+        throw std::runtime_error("irradiance cache accuracy must be in (0, 1]");
+    // The cache's records live on the host: the CUDA backend gathers at every vertex.
+    plan.irradiance_cache = plan.final_gather && settings.irradiance_cache && backend_ == BackendKind::cpu;
+    {
+        const auto& info = scene_.geometry.info;
+        const float dx = info.bounds_max[0] - info.bounds_min[0], dy = info.bounds_max[1] - info.bounds_min[1],
+                    dz = info.bounds_max[2] - info.bounds_min[2];
+        const float diagonal = std::sqrt(dx * dx + dy * dy + dz * dz);
+        plan.cache_min_radius = diagonal > 0.0f ? 1e-3f * diagonal : 1e-6f;
+        plan.cache_max_radius = diagonal > 0.0f ? 0.5f * diagonal : 1e30f;
+    }
     plan.gather_photons = mode_needs_photons(settings.mode);
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +

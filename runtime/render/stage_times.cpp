@@ -21,6 +21,12 @@ std::string format_stage_table(const StageTimes& t, double load_ms) {
     row(out, "post", t.post_ms);
     if (t.transfer_ms > 0) row(out, "buffers+copies", t.transfer_ms);
     row(out, "total (frame)", t.total_ms());
+    if (t.cache_points > 0) {
+        char line[128];
+        std::snprintf(line, sizeof line, "  irradiance cache: gather rays at %llu records for %llu diffuse points\n",
+                      static_cast<unsigned long long>(t.cache_records), static_cast<unsigned long long>(t.cache_points));
+        out += line;
+    }
     return out;
 }
 

@@ -2,6 +2,7 @@
 // Wall-clock time of each stage of a frame, in milliseconds, and the table the tools print
 // (same rows as the report's: ray tracing, photon gather, shading, post-processing, total).
 #include <chrono>
+#include <cstdint>
 #include <string>
 
 namespace kdpm {
@@ -12,6 +13,9 @@ struct StageTimes {
     double shading_ms = 0;
     double post_ms = 0;
     double transfer_ms = 0;  // frame buffer allocation and copies (CUDA: to and from the device)
+    // Final gathering with the irradiance cache: records made (points that sent gather rays) and
+    // diffuse points shaded from them; 0 without the cache.
+    std::uint64_t cache_records = 0, cache_points = 0;
     double total_ms() const { return ray_tracing_ms + photon_gather_ms + shading_ms + post_ms + transfer_ms; }
 };
 

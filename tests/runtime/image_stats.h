@@ -8,21 +8,25 @@
 
 namespace kdpm::test {
 
-inline double mean_of(const std::vector<float>& v) {
+// Mean of v[begin, end) (end 0: to the end).
+inline double mean_of(const std::vector<float>& v, std::size_t begin = 0, std::size_t end = 0) {
+    if (end == 0) end = v.size();
     double sum = 0;
-    for (float x : v) sum += x;
-    return sum / static_cast<double>(v.size());
+    for (std::size_t i = begin; i < end; ++i) sum += v[i];
+    return sum / static_cast<double>(end - begin);
 }
 
 inline double mean_of(const Image& image) { return mean_of(image.rgb); }
 
-inline double relative_mse(const Image& image, const Image& reference) {
+inline double relative_mse(const std::vector<float>& image, const std::vector<float>& reference) {
     double sum = 0;
-    for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
-        const double a = image.rgb[i], b = reference.rgb[i];
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        const double a = image[i], b = reference[i];
         sum += (a - b) * (a - b) / (b * b + 0.01);
     }
-    return sum / static_cast<double>(reference.rgb.size());
+    return sum / static_cast<double>(reference.size());
 }
+
+inline double relative_mse(const Image& image, const Image& reference) { return relative_mse(image.rgb, reference.rgb); }
 
 }  // namespace kdpm::test

@@ -40,6 +40,20 @@ AovSet parse_aovs(const std::string& text) {
     return set;
 }
 
+// --ic-accuracy: a number in (0, 1].
+float parse_ic_accuracy(const std::string& text) {
+    std::size_t used = 0;
+    float a = 0.0f;
+    try {
+        a = std::stof(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || !(a > 0.0f && a <= 1.0f))
+        throw std::invalid_argument("expected a number in (0, 1], got '" + text + "'");
+    return a;
+}
+
 int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
@@ -96,6 +110,16 @@ int run(int argc, char** argv) {
         .option("gather-rays", &gather_rays, "N",
                 "mode final-gather: cosine-distributed gather rays per diffuse point and sample (default 64)", 1,
                 static_cast<int>(kMaxGatherRays))
+        .option("irradiance-cache", "on|off",
+                "mode final-gather: gather rays only at irradiance cache records, interpolated between them "
+                "(default on; off: at every diffuse point; CPU backend only)",
+                [&](const std::string& v) {
+                    if (v != "on" && v != "off") throw std::invalid_argument("expected on or off, got '" + v + "'");
+                    settings.irradiance_cache = v == "on";
+                })
+        .option("ic-accuracy", "A",
+                "irradiance cache error bound a in (0, 1]: smaller makes more records (default 0.2)",
+                [&](const std::string& v) { settings.ic_accuracy = parse_ic_accuracy(v); })
         .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
                 [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
@@ -149,6 +173,10 @@ int run(int argc, char** argv) {
         std::cerr << "kdpm-render: " << photon_path
                   << " has no precomputed irradiance: gather hits use the k-nearest estimate (slower; rebuild it "
                      "with kdpm-build-photons)\n";
+    if (settings.mode == RenderMode::final_gather && settings.irradiance_cache && selected.kind != BackendKind::cpu &&
+        !quiet)
+        std::cerr << "kdpm-render: the irradiance cache runs on the CPU backend only; on CUDA every diffuse point "
+                     "sends gather rays\n";
     settings.post.exposure_stops = static_cast<float>(exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };

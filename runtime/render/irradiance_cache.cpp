@@ -1,0 +1,45 @@
+#include "runtime/render/irradiance_cache.h"
+
+#include <vector>
+
+#include "runtime/backend/cpu_device.h"
+#include "runtime/render/cached_gather_pass.h"
+#include "runtime/render/irradiance_record_pass.h"
+
+namespace kdpm {
+
+void run_cached_gather(CpuDevice& dev, IrradianceCache& cache, const FinalGatherPass& pass) {
+    const FrameBuffersView& frame = pass.frame;
+    const std::uint32_t w = frame.width, h = frame.height;
+    for (std::uint32_t stride : {16u, 8u, 4u, 2u, 1u}) {
+        std::vector<std::uint64_t> candidates;
+        for (std::uint32_t y = 0; y < h; y += stride)
+            for (std::uint32_t x = 0; x < w; x += stride) {
+                if (stride < 16 && x % (2 * stride) == 0 && y % (2 * stride) == 0) continue;  // a coarser level's
+                const std::uint64_t pixel = static_cast<std::uint64_t>(y) * w + x;
+                const std::uint32_t count = frame.vertex_count[pixel];
+                for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i)
+                    candidates.push_back(pixel * kMaxDiffuseVertices + i);
+            }
+        std::vector<unsigned char> uncovered(candidates.size());
+        const IrradianceTreeView view = cache.tree.view();
+        dev.launch(candidates.size(), [&](std::uint64_t c) {
+            const DiffuseVertex& v = frame.vertices[candidates[c]];
+            glm::vec3 unused;
+            uncovered[c] = !view.interpolate(v.position, v.shading_normal, unused);
+        });
+        std::vector<std::uint64_t> slots;
+        for (std::size_t c = 0; c < candidates.size(); ++c)
+            if (uncovered[c]) slots.push_back(candidates[c]);
+        if (slots.empty()) continue;
+        std::vector<IrradianceRecord> records(slots.size());
+        IrradianceRecordPass make{pass, slots.data(), records.data(), cache.min_radius, cache.max_radius};
+        dev.launch(slots.size(), make);
+        cache.tree.add(records);
+    }
+    dev.launch(static_cast<std::uint64_t>(w) * h, CachedGatherPass{pass, cache.tree.view()});
+    for (std::uint64_t p = 0; p < static_cast<std::uint64_t>(w) * h; ++p)
+        cache.points += frame.vertex_count[p] < kMaxDiffuseVertices ? frame.vertex_count[p] : kMaxDiffuseVertices;
+}
+
+}  // namespace kdpm

@@ -1,0 +1,47 @@
+#pragma once
+// One record of the irradiance cache (Ward, Rubinstein & Clear 1988) with its gradients (Ward &
+// Heckbert 1992): the indirect irradiance gathered at a point, valid around it as far as the
+// error bound allows, and extrapolated to nearby points and normals to first order.
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "formats/host_device.h"
+
+namespace kdpm {
+
+struct IrradianceRecord {
+    glm::vec3 position;
+    float radius = 0.0f;          // R_i: harmonic mean distance to the gather hits (clamped)
+    glm::vec3 normal;             // unit shading normal
+    glm::vec3 irradiance;         // E_i, per channel
+    glm::vec3 rotation[3];        // dE_c / d(rotation axis) for channel c: E(n) ~ E_i + (n_i x n) . rotation[c]
+    glm::vec3 translation[3];     // dE_c / dx for channel c: E(p) ~ E_i + (p - p_i) . translation[c]
+};
+
+// Ward's error measure e_i(p, n) = |p - p_i| / R_i + sqrt(1 - n . n_i); the weight is 1 / e_i
+// and the record is used where e_i < accuracy (weight > 1 / a). Negative: never usable there.
+KDPM_HD KDPM_INLINE float record_error(const IrradianceRecord& r, const glm::vec3& p, const glm::vec3& n) {
+    const float c = glm::dot(n, r.normal);
+    if (!(c > 0.0f)) return -1.0f;
+    const glm::vec3 d = p - r.position;
+    // Ward's "in front" test: a record standing in front of p (p behind its surface) sees a
+    // different hemisphere.
+    if (glm::dot(d, n + r.normal) * 0.5f < -0.05f * r.radius) return -1.0f;
+    const float s = 1.0f - c;
+    return glm::length(d) / r.radius + sqrtf(s > 0.0f ? s : 0.0f);
+}
+
+// The record's irradiance carried to (p, n) by its gradients, never negative.
+KDPM_HD KDPM_INLINE glm::vec3 extrapolated_irradiance(const IrradianceRecord& r, const glm::vec3& p,
+                                                      const glm::vec3& n) {
+    const glm::vec3 d = p - r.position;
+    const glm::vec3 axis = glm::cross(r.normal, n);
+    glm::vec3 e;
+    for (int c = 0; c < 3; ++c) {
+        const float v = r.irradiance[c] + glm::dot(axis, r.rotation[c]) + glm::dot(d, r.translation[c]);
+        e[c] = v > 0.0f ? v : 0.0f;
+    }
+    return e;
+}
+
+}  // namespace kdpm

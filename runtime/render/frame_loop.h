@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "runtime/geometry/geometry_view.h"
+#include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/final_gather_pass.h"
 #include "runtime/render/frame_buffers.h"
@@ -59,10 +60,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     auto vertex_count = dev.template scratch<std::uint32_t>(per_pixel);
     auto vertices = dev.template scratch<DiffuseVertex>(slots);
     auto gathered = dev.template scratch<glm::vec3>(plan.gather_photons ? slots : 0);
-    auto depth = dev.template scratch<float>(want.depth ? pixels : 0);
-    auto normal = dev.template scratch<glm::vec3>(want.normal ? pixels : 0);
-    auto position = dev.template scratch<glm::vec3>(want.position ? pixels : 0);
-    auto triangle = dev.template scratch<std::int32_t>(want.triangle ? pixels : 0);
+    const AovArrays<Device> aov_arrays(dev, want, pixels);
 
     FrameBuffersView fb;
     fb.width = plan.width;
@@ -72,10 +70,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     fb.vertices = plan.path_trace ? nullptr : vertices.data();
     fb.gathered = plan.gather_photons ? gathered.data() : nullptr;
     fb.accum = accum.data();
-    fb.depth = want.depth ? depth.data() : nullptr;
-    fb.normal = want.normal ? normal.data() : nullptr;
-    fb.position = want.position ? position.data() : nullptr;
-    fb.triangle = want.triangle ? triangle.data() : nullptr;
+    aov_arrays.name_in(fb);
     times.transfer_ms += watch.lap_ms();
 
     const std::uint32_t spp = plan.settings.spp < 1 ? 1 : plan.settings.spp;
@@ -128,18 +123,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     for (std::uint64_t i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c) linear.rgb[i * 3 + c] = sums[i][c] * inv_spp;
 
-    aovs = AovImages{};
-    if (want.depth) dev.to_host(depth, aovs.depth);
-    if (want.triangle) dev.to_host(triangle, aovs.triangle);
-    auto flatten = [&](auto& array, std::vector<float>& out) {
-        std::vector<glm::vec3> v;
-        dev.to_host(array, v);
-        out.resize(v.size() * 3);
-        for (std::size_t i = 0; i < v.size(); ++i)
-            for (int c = 0; c < 3; ++c) out[i * 3 + c] = v[i][c];
-    };
-    if (want.normal) flatten(normal, aovs.normal);
-    if (want.position) flatten(position, aovs.position);
+    aov_arrays.to_host(dev, aovs);
     times.transfer_ms += watch.lap_ms();
 }
 

@@ -14,6 +14,7 @@
 
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/photons/shoot_loop.h"
+#include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/image.h"
@@ -46,17 +47,11 @@ void run_sppm(Device& dev, const GeometryView& geometry, const LightSelection& l
     for (SppmPixel& p : start) p.radius2 = sppm.initial_radius * sppm.initial_radius;
     auto state = dev.from_host(start);
     auto points = dev.template scratch<SppmVisiblePoint>(pixels);
-    auto depth = dev.template scratch<float>(want.depth ? pixels : 0);
-    auto normal = dev.template scratch<glm::vec3>(want.normal ? pixels : 0);
-    auto position = dev.template scratch<glm::vec3>(want.position ? pixels : 0);
-    auto triangle = dev.template scratch<std::int32_t>(want.triangle ? pixels : 0);
+    const AovArrays<Device> aov_arrays(dev, want, pixels);
     FrameBuffersView fb;
     fb.width = width;
     fb.height = height;
-    fb.depth = want.depth ? depth.data() : nullptr;
-    fb.normal = want.normal ? normal.data() : nullptr;
-    fb.position = want.position ? position.data() : nullptr;
-    fb.triangle = want.triangle ? triangle.data() : nullptr;
+    aov_arrays.name_in(fb);
 
     Device pass_dev;
     ShootSettings shoot;
@@ -106,18 +101,7 @@ void run_sppm(Device& dev, const GeometryView& geometry, const LightSelection& l
         const glm::vec3 l = sppm_radiance(host_state[i], sppm.passes);
         for (int c = 0; c < 3; ++c) linear.rgb[i * 3 + c] = l[c];
     }
-    aovs = AovImages{};
-    if (want.depth) dev.to_host(depth, aovs.depth);
-    if (want.triangle) dev.to_host(triangle, aovs.triangle);
-    auto flatten = [&](auto& array, std::vector<float>& out) {
-        std::vector<glm::vec3> v;
-        dev.to_host(array, v);
-        out.resize(v.size() * 3);
-        for (std::size_t i = 0; i < v.size(); ++i)
-            for (int c = 0; c < 3; ++c) out[i * 3 + c] = v[i][c];
-    };
-    if (want.normal) flatten(normal, aovs.normal);
-    if (want.position) flatten(position, aovs.position);
+    aov_arrays.to_host(dev, aovs);
     times.transfer_ms += watch.lap_ms();
 }
 

@@ -47,6 +47,23 @@ RenderSettings settings_for(RenderMode mode, std::uint32_t w, std::uint32_t h) {
     return s;
 }
 
+// For modes whose rays may take another branch on the device (cosf/sinf differ in the last place
+// between glibc and libdevice): the images agree in the mean (0.5 %) and on a share `within` of
+// their values; the first hits, and their depths where `same_depth`, agree exactly.
+void check_agree_in_the_mean(const RenderResult& expected, const RenderResult& got, double within, bool same_depth) {
+    const Difference d = compare(expected.linear.rgb, got.linear.rgb);
+    double mean_got = 0;
+    for (float v : got.linear.rgb) mean_got += std::fabs(v);
+    mean_got /= static_cast<double>(got.linear.rgb.size());
+    INFO("mean value " << d.mean_value << " (CUDA " << mean_got << "), mean |diff| " << d.mean_abs
+                       << ", within tolerance " << d.within * 100 << "%");
+    CHECK(d.mean_value > 0.0);
+    CHECK(mean_got == Approx(d.mean_value).epsilon(0.005));
+    CHECK(d.within >= within);
+    CHECK(got.aovs.triangle == expected.aovs.triangle);
+    if (same_depth) CHECK(got.aovs.depth == expected.aovs.depth);
+}
+
 }  // namespace
 
 TEST_CASE("CUDA renders every mode like the CPU, within the stated tolerance", "[gpu][render]") {
@@ -109,17 +126,7 @@ TEST_CASE("CUDA path-traces like the CPU, within the path tracer's tolerance", "
     s.spp = 4;
     const RenderResult expected = cpu.render(s);
     const RenderResult got = cuda.render(s);
-    const Difference d = compare(expected.linear.rgb, got.linear.rgb);
-    double mean_got = 0;
-    for (float v : got.linear.rgb) mean_got += std::fabs(v);
-    mean_got /= static_cast<double>(got.linear.rgb.size());
-    INFO("mean value " << d.mean_value << " (CUDA " << mean_got << "), mean |diff| " << d.mean_abs
-                       << ", within tolerance " << d.within * 100 << "%");
-    CHECK(d.mean_value > 0.0);
-    CHECK(mean_got == Approx(d.mean_value).epsilon(0.005));
-    CHECK(d.within >= 0.95);
-    CHECK(got.aovs.triangle == expected.aovs.triangle);
-    CHECK(got.aovs.depth == expected.aovs.depth);
+    check_agree_in_the_mean(expected, got, 0.95, true);
 }
 
 // SPPM shoots its photons on the device each pass; their directions use cosf/sinf, which may
@@ -134,17 +141,7 @@ TEST_CASE("CUDA renders progressive photon mapping like the CPU", "[gpu][render]
     s.photons_per_pass = 50000;
     const RenderResult expected = cpu.render(s);
     const RenderResult got = cuda.render(s);
-    const Difference d = compare(expected.linear.rgb, got.linear.rgb);
-    double mean_got = 0;
-    for (float v : got.linear.rgb) mean_got += std::fabs(v);
-    mean_got /= static_cast<double>(got.linear.rgb.size());
-    INFO("mean value " << d.mean_value << " (CUDA " << mean_got << "), mean |diff| " << d.mean_abs
-                       << ", within tolerance " << d.within * 100 << "%");
-    CHECK(d.mean_value > 0.0);
-    CHECK(mean_got == Approx(d.mean_value).epsilon(0.005));
-    CHECK(d.within >= 0.9);
-    CHECK(got.aovs.triangle == expected.aovs.triangle);
-    CHECK(got.aovs.depth == expected.aovs.depth);
+    check_agree_in_the_mean(expected, got, 0.9, true);
 }
 
 // Gather rays leave in cosine-distributed directions (cosf/sinf, last-place differences between
@@ -164,16 +161,7 @@ TEST_CASE("CUDA final-gathers like the CPU, with the precomputed irradiance and 
         s.irradiance_cache = false;  // the cache runs on the CPU backend only
         const RenderResult expected = cpu.render(s);
         const RenderResult got = cuda.render(s);
-        const Difference d = compare(expected.linear.rgb, got.linear.rgb);
-        double mean_got = 0;
-        for (float v : got.linear.rgb) mean_got += std::fabs(v);
-        mean_got /= static_cast<double>(got.linear.rgb.size());
-        INFO("mean value " << d.mean_value << " (CUDA " << mean_got << "), mean |diff| " << d.mean_abs
-                           << ", within tolerance " << d.within * 100 << "%");
-        CHECK(d.mean_value > 0.0);
-        CHECK(mean_got == Approx(d.mean_value).epsilon(0.005));
-        CHECK(d.within >= 0.95);
-        CHECK(got.aovs.triangle == expected.aovs.triangle);
+        check_agree_in_the_mean(expected, got, 0.95, false);
     }
 }
 

@@ -10,44 +10,12 @@
 
 #include "tools/bench/bench_report.h"
 #include "tools/bench/scene_bench.h"
+#include "tools/bench/scenes_root.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
 
 using namespace kdpm;
 namespace fs = std::filesystem;
-
-namespace {
-
-bool has_scenes(const fs::path& root) {
-    std::error_code ec;
-    return fs::is_regular_file(root / "scenes" / "cornell-box" / "cornell-box.json", ec);
-}
-
-// The folder holding scenes/: --repo, else the working directory or one above it, else the source
-// tree around build/bin, else an installed share/kdpm.
-fs::path find_scenes_root(const std::string& given, const char* argv0) {
-    if (!given.empty()) {
-        if (!has_scenes(given))
-            throw std::runtime_error("--repo " + given + " has no scenes/cornell-box/cornell-box.json");
-        return given;
-    }
-    std::vector<fs::path> tried;
-    std::error_code ec;
-    for (fs::path dir = fs::current_path(ec); !ec && !dir.empty(); dir = dir.parent_path()) {
-        tried.push_back(dir);
-        if (dir == dir.parent_path()) break;
-    }
-    fs::path exe = fs::canonical("/proc/self/exe", ec);
-    if (ec) exe = fs::absolute(argv0);
-    tried.push_back(exe.parent_path().parent_path().parent_path());  // <repo>/build/bin/kdpm-bench
-    tried.push_back(exe.parent_path().parent_path() / "share" / "kdpm");  // <prefix>/bin/kdpm-bench
-    for (const auto& dir : tried)
-        if (has_scenes(dir)) return dir;
-    throw std::runtime_error("cannot find the scenes/ folder from " + fs::current_path(ec).string() +
-                             " or from the executable; run it from the kdpm source tree or pass --repo DIR");
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     bool markdown = false, quiet = false, no_peers = false, quick = false, all_threads_only = false;
@@ -67,7 +35,7 @@ int main(int argc, char** argv) {
         .flag("quiet", &quiet, "no progress lines on stderr");
     args.parse(argc, argv);
     return cli::run_tool("kdpm-bench", [&] {
-        const fs::path root = find_scenes_root(scenes_root, argv[0]);
+        const fs::path root = bench::find_scenes_root(scenes_root, argv[0]);
         fs::path dir = work.empty() ? fs::temp_directory_path() / ("kdpm-bench-" + std::to_string(::getpid())) : fs::path(work);
         fs::create_directories(dir);
         const int all = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));

@@ -1,58 +1,11 @@
 #include "tools/bench/bench_report.h"
 
-#include <cstdarg>
-#include <cstdio>
-
+#include "tools/bench/mode_frames.h"
 #include "tools/bench/report_reference.h"
+#include "tools/bench/text_table.h"
 
 namespace kdpm::bench {
 namespace {
-
-std::string fmt(const char* f, ...) {
-    char buf[512];
-    va_list args;
-    va_start(args, f);
-    std::vsnprintf(buf, sizeof buf, f, args);
-    va_end(args);
-    return buf;
-}
-
-// A table printed as Markdown or as aligned text.
-struct Table {
-    std::vector<std::string> header;
-    std::vector<std::vector<std::string>> rows;
-
-    std::string render(bool markdown) const {
-        std::vector<std::size_t> width(header.size(), 0);
-        auto widen = [&](const std::vector<std::string>& r) {
-            for (std::size_t i = 0; i < r.size() && i < width.size(); ++i) width[i] = std::max(width[i], r[i].size());
-        };
-        widen(header);
-        for (const auto& r : rows) widen(r);
-        std::string out;
-        auto line = [&](const std::vector<std::string>& r) {
-            out += markdown ? "|" : "";
-            for (std::size_t i = 0; i < width.size(); ++i) {
-                std::string cell = i < r.size() ? r[i] : "";
-                if (markdown) {
-                    out += " " + cell + " |";
-                } else {
-                    std::string pad(width[i] - cell.size(), ' ');
-                    out += (i == 0 ? cell + pad : pad + cell) + "  ";
-                }
-            }
-            out += "\n";
-        };
-        line(header);
-        if (markdown) {
-            out += "|";
-            for (std::size_t i = 0; i < width.size(); ++i) out += i == 0 ? "---|" : "---:|";
-            out += "\n";
-        }
-        for (const auto& r : rows) line(r);
-        return out;
-    }
-};
 
 std::string ms(double v) { return v <= 0 ? "-" : v < 10 ? fmt("%.2f", v) : fmt("%.1f", v); }
 std::string ratio(double a, double b) { return (a <= 0 || b <= 0) ? "-" : fmt("%.2fx", a / b); }
@@ -204,6 +157,8 @@ std::string format_report(const std::vector<SceneBenchResult>& results, bool md)
         out += quality_table(r, md);
         out += "\n";
         out += peer_table(r, md);
+        out += "\n";
+        out += format_mode_frames(r.name, r.mode_frames, md);
         out += "\n";
         out += target_lines(r);
     }

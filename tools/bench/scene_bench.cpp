@@ -21,6 +21,7 @@
 #include "tools/bench/median_time.h"
 #include "tools/bench/peer_embree.h"
 #include "tools/bench/peer_nanoflann.h"
+#include "tools/photons/irradiance_step.h"
 
 namespace kdpm::bench {
 namespace {
@@ -260,7 +261,8 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
     PhotonTreeOptions balanced;
     balanced.builder = PhotonTreeBuilder::balanced;
     out.balanced_tree_ms = median_ms(c.frames, [&] { (void)build_photon_map_file(set, balanced, {}); });
-    build_photon_map_file(set, vvh, {}).writer.write(kdp);
+    // As kdpm-build-photons writes it: with the irradiance map that final gathering reads.
+    build_photon_map_file(set, vvh, {}, every_nth_photon_irradiance(4, 64)).writer.write(kdp);
     out.kdp_bytes = std::filesystem::file_size(kdp);
 
     say(c, "loading the files");
@@ -282,6 +284,15 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
         } catch (const std::exception& e) {
             out.cuda_note = "no CUDA device (" + std::string(e.what()) + ")";
         }
+    }
+    {
+        ModeFrameConfig modes;
+        modes.width = c.width;
+        modes.height = c.height;
+        modes.frames = c.frames;
+        modes.threads = c.threads.back();
+        modes.say = [&](const std::string& what) { say(c, what); };
+        out.mode_frames = measure_mode_frames(loaded.views(), modes);
     }
     if (c.peers) compare_peers(c, geometry, loaded.views().photons, out);
     const int all = c.threads.back();

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "tools/bench/mode_frames.h"
+
 namespace kdpm::bench {
 
 struct SceneBenchConfig {
@@ -63,6 +65,7 @@ struct SceneBenchResult {
     std::vector<FrameTable> frames;
     std::string cuda_note;                     // "no CUDA device" etc.
     PeerFigures peers;
+    ModeFrames mode_frames;                    // all threads, each lighting mode
 };
 
 SceneBenchResult run_scene_bench(const SceneBenchConfig& config);

@@ -15,7 +15,7 @@ TEST_CASE("every tool prints its version, the file formats and the backends", "[
                                          std::to_string(file_kind_info(FileKind::geometry).minor);
     for (const char* tool : {"kdpm-build-geometry", "kdpm-shoot-photons", "kdpm-build-photons", "kdpm-render",
                              "kdpm-view", "kdpm-inspect", "kdpm-validate", "kdpm-bench", "kdpm-bench-build",
-                             "kdpm-bench-photons"}) {
+                             "kdpm-bench-photons", "kdpm-bench-quality"}) {
         if (!std::filesystem::exists(test::tool_path(tool))) {
             WARN(tool << " is not built here");
             continue;

@@ -26,3 +26,9 @@ target_sources(kdpm-bench PRIVATE bench/scene_bench.cpp bench/bench_report.cpp)
 # The full frame per mode, and the viewer's frame made as kdpm-view makes it (kdpm_view has no window).
 target_sources(kdpm-bench PRIVATE bench/mode_frames.cpp bench/scenes_root.cpp)
 target_link_libraries(kdpm-bench PRIVATE kdpm_view kdpm_runtime_photons)
+
+# kdpm-bench-quality: error against time of every lighting mode against a path-traced reference.
+kdpm_tool(kdpm-bench-quality bench/quality_main.cpp
+          kdpm_render kdpm_geometry_builder kdpm_photon_shooter kdpm_builders_photons kdpm_runtime_photons)
+target_sources(kdpm-bench-quality PRIVATE bench/quality_bench.cpp bench/quality_report.cpp bench/reference_cache.cpp
+               bench/scenes_root.cpp render/pfm_reader.cpp)

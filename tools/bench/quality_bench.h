@@ -1,0 +1,65 @@
+#pragma once
+// kdpm-bench-quality on one scene: a converged --mode path reference (cached in the work folder),
+// then each lighting mode over a ladder of settings of increasing cost, every rung rendered,
+// timed and compared with the reference: error against time.
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "runtime/render/image.h"
+
+namespace kdpm::bench {
+
+struct QualityConfig {
+    std::string name;               // "cornell-box", "sponza", "conference"
+    std::filesystem::path card;     // scene card
+    std::filesystem::path work_dir; // .kdg, .kdp and the cached references
+    std::uint32_t size = 512;       // width and height
+    int threads = 2;                // the ladders' thread count (the reference uses every core)
+    std::uint32_t reference_spp = 4096;
+    std::uint32_t max_bounces = 0;  // path reference, path and sppm ladders; 0: unlimited
+    std::uint32_t photons = 0;      // photon paths of the .kdp; 0: the scene card's
+    double seconds = 2.0;           // the equal-time budget
+    double sppm_seconds = 30.0;     // the sppm curve runs until a rung takes this long
+    int max_rungs = 12;             // per ladder
+    std::function<void(const std::string&)> say;  // progress lines (may be empty)
+    bool progress_bar = false;      // the reference render's bar (a terminal)
+};
+
+struct Rung {
+    std::string setting;                 // "4 spp", "64 gather rays", "16 passes"
+    double seconds = 0;                  // wall time of the render
+    double relmse = 0;                   // against the reference
+    double mean_ratio = 0;               // image mean / reference mean
+    std::array<double, 3> third_ratio{}; // the same per horizontal third, top to bottom
+};
+
+struct Ladder {
+    std::string mode;  // "path", "photons", "direct+photons", "final-gather + cache", ...
+    std::vector<Rung> rungs;
+};
+
+struct QualityResult {
+    std::string name;
+    std::uint32_t size = 0, reference_spp = 0, max_bounces = 0;
+    int threads = 0;
+    double seconds = 0;
+    std::filesystem::path reference_file;
+    bool reference_reused = false;
+    double reference_render_seconds = 0;  // 0 when reused
+    std::vector<Ladder> ladders;
+};
+
+QualityResult run_quality_bench(const QualityConfig& config);
+
+// The image's mean over all pixels and channels, and over each horizontal third of its rows.
+struct ImageMeans {
+    double all = 0;
+    std::array<double, 3> thirds{};
+};
+ImageMeans image_means(const Image& image);
+
+}  // namespace kdpm::bench

@@ -48,6 +48,10 @@ TEST_CASE("kdpm-bench finds scenes/ from the working directory", "[tools][bench]
     INFO(found.output);
     CHECK(found.exit_code == 0);
     CHECK_THAT(found.output, Catch::Contains("cornell-box"));
+    // The full frame in every lighting mode, and the viewer's frame rate.
+    for (const char* row : {"\ndirect ", "\nphotons ", "\ndirect+photons ", "\npath ", "cache on", "cache off", "\nsppm "})
+        CHECK_THAT(found.output, Catch::Contains("full frame per mode") && Catch::Contains(row));
+    CHECK_THAT(found.output, Catch::Contains("viewer frame (kdpm-view at rest: photons, k=32"));
 
     const auto given = run_in(dir.path(), quick + " --repo " + (dir / "project").string());
     INFO(given.output);

@@ -113,7 +113,8 @@ TEST_CASE("kdpm-bench-quality refuses bad options in one line", "[tools][bench]"
     // (an option given twice takes its last value).
     const std::string base = "kdpm-bench-quality --scenes cornell-box --repo " + test::source_path("") + " --work " +
                              (dir / "work").string() + " --size 8 --reference-spp 1 --max-rungs 1 --photons 100 --quiet ";
-    for (const char* bad : {"--size 0", "--seconds -1", "--threads 0", "--reference-spp x", "--no-such-option"}) {
+    for (const char* bad : {"--size 0", "--seconds -1", "--threads 0", "--reference-spp x", "--reference-backend gpu",
+                            "--no-such-option"}) {
         const auto r = test::run_tool(base + bad);
         INFO(bad << ": " << r.output);
         CHECK(r.exit_code == 2);

@@ -156,7 +156,10 @@ QualityResult run_quality_bench(const QualityConfig& c) {
         reference = std::move(*cached);
         out.reference_reused = true;
     } else {
-        if (c.say) c.say("rendering the reference (" + std::to_string(c.reference_spp) + " spp, every core)");
+        const BackendSelection backend = select_backend(c.reference_backend);
+        if (c.say && !backend.notice.empty()) c.say(backend.notice);
+        out.reference_backend = backend_name(backend.kind);
+        if (c.say) c.say("rendering the reference (" + std::to_string(c.reference_spp) + " spp, " + out.reference_backend + ")");
         RenderSettings s;
         s.width = s.height = c.size;
         s.mode = RenderMode::path;
@@ -165,7 +168,7 @@ QualityResult run_quality_bench(const QualityConfig& c) {
         s.max_depth = key.max_depth;
         cli::Progress bar("reference " + c.name, !c.progress_bar);
         s.progress = [&](double f) { bar.update(f); };
-        Renderer renderer(loaded.views(), BackendKind::cpu);
+        Renderer renderer(loaded.views(), backend.kind);
         StopWatch watch;
         reference = renderer.render(s).linear;
         out.reference_render_seconds = watch.lap_ms() / 1000.0;

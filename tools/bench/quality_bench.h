@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/backend/backend_kind.h"
 #include "runtime/render/image.h"
 
 namespace kdpm::bench {
@@ -20,6 +21,7 @@ struct QualityConfig {
     std::uint32_t size = 512;       // width and height
     int threads = 2;                // the ladders' thread count (the reference uses every core)
     std::uint32_t reference_spp = 4096;
+    BackendRequest reference_backend = BackendRequest::automatic;  // CUDA renders it much sooner
     std::uint32_t max_bounces = 0;  // path reference, path and sppm ladders; 0: unlimited
     std::uint32_t photons = 0;      // photon paths of the .kdp; 0: the scene card's
     double seconds = 2.0;           // the equal-time budget
@@ -50,6 +52,7 @@ struct QualityResult {
     std::filesystem::path reference_file;
     bool reference_reused = false;
     double reference_render_seconds = 0;  // 0 when reused
+    std::string reference_backend;        // "cpu" (every core) or "cuda" when rendered
     std::vector<Ladder> ladders;
 };
 

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <thread>
 
+#include "runtime/backend/backend_kind.h"
 #include "tools/bench/quality_bench.h"
 #include "tools/bench/quality_report.h"
 #include "tools/bench/scenes_root.h"
@@ -33,14 +34,18 @@ int main(int argc, char** argv) {
     int size = 512, threads = 2, reference_spp = 4096, max_bounces = 0, photons = 0, max_rungs = 12;
     double seconds = 2.0, sppm_seconds = 30.0;
     std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
+    BackendRequest reference_backend = BackendRequest::automatic;
     cli::Args args("kdpm-bench-quality",
                    "Error against time of every lighting mode, against a converged path-traced reference.");
     args.flag("markdown", &markdown, "print Markdown tables")
         .option("scenes", &scenes_arg, "LIST", "comma-separated: cornell-box,sponza,conference (default all found)")
         .option("size", &size, "N", "image width and height (default 512)", 8, 4096)
-        .option("threads", &threads, "N", "threads of the timed renders (default 2; the reference uses every core)", 1, 1024)
+        .option("threads", &threads, "N", "threads of the timed renders (default 2; a CPU reference uses every core)", 1, 1024)
         .option("reference-spp", &reference_spp, "N", "samples per pixel of the path-traced reference (default 4096)", 1,
                 1 << 20)
+        .option("reference-backend", "auto|cpu|cuda",
+                "where the reference renders (default auto: CUDA when a device exists, else every CPU core)",
+                [&](const std::string& v) { reference_backend = parse_backend_request(v); })
         .option("max-bounces", &max_bounces, "N",
                 "diffuse bounces of the reference, path and sppm (default 0: unlimited)", 0, 1000)
         .option("photons", &photons, "N", "photon paths of the .kdp (default: the scene card's)", 0, 1 << 26)
@@ -70,6 +75,7 @@ int main(int argc, char** argv) {
             c.size = static_cast<std::uint32_t>(size);
             c.threads = threads;
             c.reference_spp = static_cast<std::uint32_t>(reference_spp);
+            c.reference_backend = reference_backend;
             c.max_bounces = static_cast<std::uint32_t>(max_bounces);
             c.photons = static_cast<std::uint32_t>(photons);
             c.seconds = seconds;

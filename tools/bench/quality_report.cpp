@@ -101,7 +101,8 @@ std::string format_quality_report(const std::vector<QualityResult>& results, boo
         const std::string title = fmt("%s, %ux%u, %d threads", r.name.c_str(), r.size, r.size, r.threads);
         out += md ? "\n### " + title + "\n\n" : "\n== " + title + " ==\n";
         out += fmt("reference: --mode path, %u spp, %s, %s %s\n", r.reference_spp, bounces.c_str(),
-                   r.reference_reused ? "reused from" : fmt("rendered in %.1f s on every core, cached as", r.reference_render_seconds).c_str(),
+                   r.reference_reused ? "reused from" : fmt("rendered in %.1f s (%s), cached as", r.reference_render_seconds,
+                                                        r.reference_backend == "cpu" ? "CPU, every core" : r.reference_backend.c_str()).c_str(),
                    r.reference_file.string().c_str());
         out += fmt("%s(path shares its first samples with the reference: its relMSE at n spp reads low by a factor 1 - n/%u)\n\n",
                    md ? "\n" : "", r.reference_spp);

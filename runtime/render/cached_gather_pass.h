@@ -26,7 +26,7 @@ struct CachedGatherPass {
             const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
             const DiffuseVertex& v = frame.vertices[slot];
             glm::vec3 irradiance(0.0f);
-            if (!cache.interpolate(v.position, v.shading_normal, irradiance)) {
+            if (!cache.interpolate(v.position, v.geometric_normal, irradiance)) {
                 gather.gather_vertex(pixel, i, heap);
                 continue;
             }

@@ -76,9 +76,9 @@ struct FinalGatherPass {
     // The radiance arriving at the vertex along one gather ray.
     KDPM_HD glm::vec3 gather(const DiffuseVertex& v, std::uint64_t path, std::uint32_t ray_index, KnnHeap& heap) const {
         auto random = [&](std::uint32_t dimension) { return counter_random(kSeed, path, ray_index, dimension); };
-        glm::vec3 direction = cosine_direction(v.shading_normal, random(0), random(1));
-        // A shading normal tilted from the geometric one can send the ray into the surface.
-        if (glm::dot(direction, v.geometric_normal) <= 0.0f) return glm::vec3(0.0f);
+        // About the geometric normal, as the photon shooter bounces (diffuse.h says why).
+        glm::vec3 direction = cosine_direction(v.geometric_normal, random(0), random(1));
+        if (glm::dot(direction, v.geometric_normal) <= 0.0f) return glm::vec3(0.0f);  // grazing
         float distance = 0.0f;
         return follow(v, direction, path, ray_index, heap, distance);
     }

@@ -37,6 +37,7 @@ struct FramePlan {
     bool final_gather = false;  // --mode final-gather: the gather pass sends gather rays (needs gather_photons)
     bool irradiance_cache = false;  // final-gather: gather rays only at cache records (CPU backend)
     float cache_min_radius = 0.0f, cache_max_radius = 1e30f;  // clamp of the records' R_i (scene units)
+    IrradianceCache* kept_cache = nullptr;  // records from earlier frames to use and extend; null: a new cache
 };
 
 template <class Device>
@@ -84,7 +85,9 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         times.ray_tracing_ms += watch.lap_ms();
         report(s, 3);
     }
-    IrradianceCache cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius);
+    IrradianceCache fresh_cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius);
+    IrradianceCache& cache = plan.kept_cache ? *plan.kept_cache : fresh_cache;
+    const std::uint64_t records_before = cache.tree.records().size(), points_before = cache.points;
     for (std::uint32_t s = 0; s < spp && !plan.path_trace; ++s) {
         TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
         dev.launch(pixels, trace);
@@ -113,8 +116,9 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         report(s, 3);
     }
 
-    times.cache_records = cache.tree.records().size();
-    times.cache_points = cache.points;
+    times.cache_records = cache.tree.records().size() - records_before;
+    times.cache_points = cache.points - points_before;
+    times.cache_records_kept = records_before;
 
     std::vector<glm::vec3> sums;
     dev.to_host(accum, sums);

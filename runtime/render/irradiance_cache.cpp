@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <tbb/task_group.h>
+
 #include "runtime/backend/cpu_device.h"
 #include "runtime/render/cached_gather_pass.h"
 #include "runtime/render/irradiance_record_pass.h"
@@ -26,7 +28,7 @@ void run_cached_gather(CpuDevice& dev, IrradianceCache& cache, const FinalGather
         dev.launch(candidates.size(), [&](std::uint64_t c) {
             const DiffuseVertex& v = frame.vertices[candidates[c]];
             glm::vec3 unused;
-            uncovered[c] = !view.interpolate(v.position, v.shading_normal, unused);
+            uncovered[c] = !view.interpolate(v.position, v.geometric_normal, unused);
         });
         std::vector<std::uint64_t> slots;
         for (std::size_t c = 0; c < candidates.size(); ++c)
@@ -35,6 +37,9 @@ void run_cached_gather(CpuDevice& dev, IrradianceCache& cache, const FinalGather
         std::vector<IrradianceRecord> records(slots.size());
         IrradianceRecordPass make{pass, slots.data(), records.data(), cache.min_radius, cache.max_radius};
         dev.launch(slots.size(), make);
+        // A cancelled frame (the viewer's stale refinement) stops its loops part-way: records it
+        // did not finish must not enter a cache that later frames keep.
+        if (tbb::is_current_task_group_canceling()) return;
         cache.tree.add(records);
     }
     dev.launch(static_cast<std::uint64_t>(w) * h, CachedGatherPass{pass, cache.tree.view()});

@@ -12,7 +12,7 @@ namespace kdpm {
 struct IrradianceRecord {
     glm::vec3 position;
     float radius = 0.0f;          // R_i: harmonic mean distance to the gather hits (clamped)
-    glm::vec3 normal;             // unit shading normal
+    glm::vec3 normal;             // unit geometric normal, the gather rays' axis
     glm::vec3 irradiance;         // E_i, per channel
     glm::vec3 rotation[3];        // dE_c / d(rotation axis) for channel c: E(n) ~ E_i + (n_i x n) . rotation[c]
     glm::vec3 translation[3];     // dE_c / dx for channel c: E(p) ~ E_i + (p - p_i) . translation[c]

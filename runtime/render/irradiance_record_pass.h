@@ -46,7 +46,7 @@ struct IrradianceRecordPass {
         std::uint32_t rows = 1, columns = 1;
         record_strata(gather.gather_rays, rows, columns);
         glm::vec3 t, b;
-        tangent_frame(v.shading_normal, t, b);
+        tangent_frame(v.geometric_normal, t, b);  // as every gather ray (diffuse.h)
         KnnHeap heap;
 
         glm::vec3 previous_row_l[kMaxRecordColumns];
@@ -71,10 +71,10 @@ struct IrradianceRecordPass {
                 const float sin_t = sqrtf(sin2), cos_t = sqrtf(1.0f - sin2 > 1e-8f ? 1.0f - sin2 : 1e-8f);
                 const float phi = 2.0f * kPi * (static_cast<float>(k) + u2) / n;
                 const glm::vec3 dir =
-                    glm::normalize(sin_t * cosf(phi) * t + sin_t * sinf(phi) * b + cos_t * v.shading_normal);
+                    glm::normalize(sin_t * cosf(phi) * t + sin_t * sinf(phi) * b + cos_t * v.geometric_normal);
                 glm::vec3 l(0.0f);
                 float d = std::numeric_limits<float>::infinity();
-                // A shading normal tilted from the geometric one can send the ray into the surface.
+                // Exactly grazing: no light.
                 if (glm::dot(dir, v.geometric_normal) > 0.0f) l = gather.follow(v, dir, path, ray, heap, d);
                 sum += l;
                 if (d < std::numeric_limits<float>::infinity() && d > 0.0f) inverse_distances += 1.0f / d;
@@ -114,7 +114,7 @@ struct IrradianceRecordPass {
         const float cell = kPi / (m * n);  // the cosine-weighted solid angle of one stratum
         IrradianceRecord r;
         r.position = v.position;
-        r.normal = v.shading_normal;
+        r.normal = v.geometric_normal;
         r.irradiance = sum * cell;
         for (int c = 0; c < 3; ++c) {
             r.rotation[c] = rotation[c] * cell;

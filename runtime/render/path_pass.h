@@ -109,9 +109,9 @@ struct PathPass {
                 ++diffuse;
                 if (max_bounces != 0 && diffuse >= max_bounces) break;
                 if (!russian_roulette(throughput, albedo, random(3))) break;
-                direction = cosine_direction(s.shading_normal, random(4), random(5));
-                // A shading normal tilted from the geometric one can send the bounce into the surface.
-                if (glm::dot(direction, s.geometric_normal) <= 0.0f) break;
+                // About the geometric normal, as the photon shooter bounces (diffuse.h says why).
+                direction = cosine_direction(s.geometric_normal, random(4), random(5));
+                if (glm::dot(direction, s.geometric_normal) <= 0.0f) break;  // grazing, no light
                 origin = above;
                 run_depth = 0;
                 count_emission = false;

@@ -49,6 +49,9 @@ struct RenderSettings {
     std::uint32_t gather_rays = 64;       // mode final-gather: gather rays per diffuse point and sample
     bool irradiance_cache = true;         // mode final-gather: gather only at cache records (CPU backend)
     float ic_accuracy = 0.2f;             // the cache's error bound a: records are used where e_i < a
+    // Keep the cache's records for this renderer's later frames while the scene's gather settings
+    // stay the same (the viewer): records hold irradiance, which does not depend on the view.
+    bool keep_irradiance_cache = false;
     std::optional<CameraRecord> camera;   // overrides the file's camera (viewer, benchmarks)
     AovSet aovs;
     PostSettings post;

@@ -35,6 +35,31 @@ const char* render_mode_name(RenderMode mode) {
     return "?";
 }
 
+// The irradiance cache kept between frames, with what its records depend on: the settings of the
+// gather rays and of the photon estimates they read (not the camera: irradiance is view-independent).
+struct KeptIrradianceCache {
+    struct Key {
+        std::uint32_t k, max_depth, gather_rays;
+        float max_radius, disc_flatten, ic_accuracy, min_radius, max_record_radius;
+        bool cone_filter, fixed_radius;
+        bool operator==(const Key&) const = default;
+    };
+    // Past this many records the cache starts afresh: a long flight through a large scene would
+    // otherwise grow it without bound (about 100 bytes a record).
+    static constexpr std::size_t kMaxRecords = std::size_t(1) << 21;
+
+    Key key;
+    IrradianceCache cache;
+
+    static Key key_of(const FramePlan& plan) {
+        const RenderSettings& s = plan.settings;
+        return {s.k, s.max_depth, s.gather_rays, s.max_radius, s.disc_flatten, s.ic_accuracy,
+                plan.cache_min_radius, plan.cache_max_radius, s.cone_filter, s.fixed_radius};
+    }
+    KeptIrradianceCache(const FramePlan& plan)
+        : key(key_of(plan)), cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius) {}
+};
+
 namespace {
 
 // Photons up to 63 bounces stand for "unlimited" (roulette ends nearly every path before).
@@ -157,6 +182,13 @@ RenderResult Renderer::render(const RenderSettings& settings) {
             "a fixed-radius gather needs a radius: the photon map records none, give one (--max-radius R > 0)");
 
     if (plan.progressive) plan.sppm = sppm_plan(settings, scene_, plan.width, plan.height);
+
+    if (plan.irradiance_cache && settings.keep_irradiance_cache) {
+        if (!kept_cache_ || !(kept_cache_->key == KeptIrradianceCache::key_of(plan)) ||
+            kept_cache_->cache.tree.records().size() > KeptIrradianceCache::kMaxRecords)
+            kept_cache_ = std::make_unique<KeptIrradianceCache>(plan);
+        plan.kept_cache = &kept_cache_->cache;
+    }
 
     RenderResult result;
     impl_->run(plan, result.linear, result.aovs, result.times);

@@ -13,6 +13,7 @@
 namespace kdpm {
 
 class FrameBackend;
+struct KeptIrradianceCache;
 
 class Renderer {
 public:
@@ -37,6 +38,7 @@ private:
     SceneViews scene_;
     BackendKind backend_;
     std::unique_ptr<FrameBackend> impl_;
+    std::unique_ptr<KeptIrradianceCache> kept_cache_;  // RenderSettings::keep_irradiance_cache
 };
 
 }  // namespace kdpm

@@ -26,6 +26,11 @@ std::string format_stage_table(const StageTimes& t, double load_ms) {
         std::snprintf(line, sizeof line, "  irradiance cache: gather rays at %llu records for %llu diffuse points\n",
                       static_cast<unsigned long long>(t.cache_records), static_cast<unsigned long long>(t.cache_points));
         out += line;
+        if (t.cache_records_kept > 0) {
+            std::snprintf(line, sizeof line, "  irradiance cache: %llu records kept from earlier frames\n",
+                          static_cast<unsigned long long>(t.cache_records_kept));
+            out += line;
+        }
     }
     return out;
 }

@@ -13,9 +13,10 @@ struct StageTimes {
     double shading_ms = 0;
     double post_ms = 0;
     double transfer_ms = 0;  // frame buffer allocation and copies (CUDA: to and from the device)
-    // Final gathering with the irradiance cache: records made (points that sent gather rays) and
-    // diffuse points shaded from them; 0 without the cache.
-    std::uint64_t cache_records = 0, cache_points = 0;
+    // Final gathering with the irradiance cache: records made in this frame (points that sent
+    // gather rays), diffuse points shaded from the cache, and records kept from earlier frames
+    // (RenderSettings::keep_irradiance_cache); 0 without the cache.
+    std::uint64_t cache_records = 0, cache_points = 0, cache_records_kept = 0;
     double total_ms() const { return ray_tracing_ms + photon_gather_ms + shading_ms + post_ms + transfer_ms; }
 };
 

@@ -126,6 +126,7 @@ private:
         s.height = step.height;
         s.spp = step.spp;
         s.passes = step.spp;  // sppm refines by passes: 1, 2, 4, ... while the camera is still
+        s.keep_irradiance_cache = true;  // final-gather: records made in earlier frames serve later ones
         s.k = options_.k;
         s.mode = options_.mode;
         s.light_samples = light_samples_;

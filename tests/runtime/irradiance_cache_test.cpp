@@ -1,7 +1,7 @@
 // The irradiance cache of final gathering: the record tree's lookup against brute force, exact
 // interpolation on a flat plane under uniform and linearly varying light, and on the Cornell box
 // the cached image against the uncached one and the path tracer, with gather rays at far fewer
-// points than are shaded.
+// points than are shaded; a cache kept between frames.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -12,6 +12,9 @@
 #include <vector>
 
 #include "runtime/render/irradiance_record_tree.h"
+#include "runtime/render/renderer.h"
+#include "tests/runtime/built_scene.h"
+#include "tests/runtime/in_memory_photons.h"
 #include "tests/runtime/cornell_box_runs.h"
 #include "tests/runtime/image_stats.h"
 #include "tests/support/run_command.h"
@@ -163,4 +166,46 @@ TEST_CASE("kdpm-render refuses bad irradiance cache options in one line", "[rend
         CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);
         CHECK_FALSE(std::filesystem::exists(box.dir / "x.png"));
     }
+}
+
+TEST_CASE("a kept irradiance cache serves later frames and starts afresh when the gather settings change",
+          "[render][final-gather][irradiance-cache]") {
+    test::BuiltScene scene(800, 5, 40, 30);
+    const test::InMemoryPhotons photons(scene.views.geometry, 20000, 5, 32);
+    scene.views.photons = photons.maps();
+    RenderSettings settings;
+    settings.mode = RenderMode::final_gather;
+    settings.gather_rays = 8;
+    settings.light_samples = 2;
+    settings.keep_irradiance_cache = true;
+    Renderer renderer(scene.views, BackendKind::cpu);
+
+    const RenderResult first = renderer.render(settings);
+    REQUIRE(first.times.cache_records > 0);
+    CHECK(first.times.cache_records_kept == 0);
+    // The same frame again: every point is covered by the kept records, none is made, and the
+    // image is the first one's (the same points read the same records).
+    const RenderResult again = renderer.render(settings);
+    CHECK(again.times.cache_records == 0);
+    CHECK(again.times.cache_records_kept == first.times.cache_records);
+    CHECK(again.linear.rgb == first.linear.rgb);
+    // A moved camera keeps the records (irradiance does not depend on the view) and adds only
+    // where the new view sees uncovered points.
+    CameraRecord moved = scene.views.camera;
+    moved.eye[0] += 0.05f;
+    settings.camera = moved;
+    const RenderResult elsewhere = renderer.render(settings);
+    CHECK(elsewhere.times.cache_records_kept == first.times.cache_records);
+    Renderer fresh_renderer(scene.views, BackendKind::cpu);
+    RenderSettings fresh = settings;
+    fresh.keep_irradiance_cache = false;
+    CHECK(elsewhere.times.cache_records < fresh_renderer.render(fresh).times.cache_records);
+    // Another accuracy makes other records: the kept ones are dropped.
+    settings.ic_accuracy = 0.3f;
+    const RenderResult changed = renderer.render(settings);
+    CHECK(changed.times.cache_records_kept == 0);
+    CHECK(changed.times.cache_records > 0);
+    // Without keeping, every frame starts with an empty cache.
+    settings.keep_irradiance_cache = false;
+    CHECK(renderer.render(settings).times.cache_records_kept == 0);
 }

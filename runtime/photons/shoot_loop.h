@@ -19,6 +19,7 @@
 namespace kdpm {
 
 // One work item per path of the batch starting at path `first`.
+template <class ClosestHit = KdTreeClosestHit>
 struct ShootPathsPass {
     GeometryView geometry;
     LightSelection lights;
@@ -26,10 +27,11 @@ struct ShootPathsPass {
     std::uint64_t first = 0;
     PhotonHit* slots = nullptr;  // (max_bounces + 1) per path of the batch
     PhotonPathResult* results = nullptr;
+    ClosestHit intersect{};
 
     KDPM_HD void operator()(std::uint64_t i) const {
         const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
-        results[i] = trace_photon_path(geometry, lights, settings, first + i, slots + i * per_path);
+        results[i] = trace_photon_path(geometry, lights, settings, first + i, slots + i * per_path, intersect);
     }
 };
 
@@ -41,12 +43,13 @@ inline std::uint64_t shoot_batch_size(std::uint32_t max_bounces, std::uint64_t p
 }
 
 // Paths first_path .. end_path - 1 (a shard, or all). geometry and lights hold arrays where `dev`
-// runs. Appends the stored hits to `hits` in path order and returns the rays traced.
-template <class Device>
+// runs. Appends the stored hits to `hits` in path order and returns the rays traced. `intersect`:
+// see trace_photon_path.
+template <class Device, class ClosestHit = KdTreeClosestHit>
 std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                           const ShootSettings& settings, std::uint64_t first_path, std::uint64_t end_path,
                           std::uint64_t batch, std::vector<PhotonHit>& hits,
-                          const std::function<void(double)>& progress) {
+                          const std::function<void(double)>& progress, const ClosestHit& intersect = ClosestHit{}) {
     const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
     std::uint64_t rays = 0;
     std::vector<PhotonHit> batch_hits;
@@ -57,7 +60,7 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         // Every path writes its result; slots past a path's `stored` are never read.
         auto slots = dev.template scratch<PhotonHit>(n * per_path);
         auto results = dev.template scratch<PhotonPathResult>(n);
-        dev.launch(n, ShootPathsPass{geometry, lights, settings, first, slots.data(), results.data()});
+        dev.launch(n, ShootPathsPass<ClosestHit>{geometry, lights, settings, first, slots.data(), results.data(), intersect});
         dev.to_host(slots, batch_hits);
         dev.to_host(results, batch_results);
         for (std::uint64_t i = 0; i < n; ++i) {

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -137,7 +138,21 @@ Metadata metadata_from_json(std::string_view json) {
 std::string hash_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FormatError("cannot read '" + path + "'");
-    std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Read in large blocks: an istreambuf_iterator costs about 13 instructions a byte, as much as
+    // shooting 20,000 photons into Sponza when the .kdg is hashed for the photon file's metadata.
+    // A regular file comes in one read (its size and one byte more, to meet the end).
+    std::error_code size_error;
+    const auto size = std::filesystem::file_size(path, size_error);
+    const std::size_t block = size_error ? std::size_t{1} << 16 : static_cast<std::size_t>(size) + 1;
+    std::vector<char> bytes;
+    for (;;) {
+        const std::size_t old = bytes.size();
+        bytes.resize(old + block);
+        in.read(bytes.data() + old, static_cast<std::streamsize>(block));
+        bytes.resize(old + static_cast<std::size_t>(in.gcount()));
+        if (!in) break;
+    }
+    if (in.bad()) throw FormatError("cannot read '" + path + "'");
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(checksum64(bytes.data(), bytes.size())));
     return hex;

@@ -11,6 +11,8 @@
 namespace kdpm {
 
 struct CpuDevice {
+    // Arrays are host memory: a caller may read them in place instead of copying with to_host.
+    static constexpr bool arrays_on_host = true;
     template <class T>
     struct Array {
         std::unique_ptr<T[]> items;

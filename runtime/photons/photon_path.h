@@ -4,7 +4,9 @@
 // geometry kd-tree; stored at every diffuse hit; continued by the material (diffuse: cosine
 // bounce; mirror: reflection; glass: Fresnel reflection or refraction) with Russian roulette on
 // the reflectance, for at most max_bounces bounces. All randomness is counter_random(seed,
-// path, bounce, dimension), so the path is a pure function of its index.
+// path, bounce, dimension), so the path is a pure function of its index. The closest-hit query
+// is a parameter (the kd-tree walk by default) so that a bench peer can run the very same path
+// rules over another intersector.
 #include <cstdint>
 
 #include <glm/geometric.hpp>
@@ -49,9 +51,17 @@ KDPM_HD KDPM_INLINE void put3(float (&dst)[3], const glm::vec3& v) {
 
 }  // namespace photon_path_detail
 
-// Traces path `path`; `out` has room for max_bounces + 1 hits.
+// The geometry kd-tree's closest hit: the intersector of every kdpm shooter.
+struct KdTreeClosestHit {
+    KDPM_HD KDPM_INLINE Hit operator()(const GeometryView& g, const Ray& ray) const { return closest_hit(g, ray); }
+};
+
+// Traces path `path`; `out` has room for max_bounces + 1 hits. intersect(g, ray) returns the
+// closest Hit (triangle index into g.triangles, barycentrics u, v of v1 and v2) or a miss.
+template <class ClosestHit = KdTreeClosestHit>
 KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const LightSelection& lights,
-                                                  const ShootSettings& s, std::uint64_t path, PhotonHit* out) {
+                                                  const ShootSettings& s, std::uint64_t path, PhotonHit* out,
+                                                  const ClosestHit& intersect = ClosestHit{}) {
     using namespace photon_path_detail;
     PhotonPathResult result;
     if (lights.count == 0 || !(lights.total_power > 0.0f) || s.emitted_count == 0) return result;
@@ -72,7 +82,7 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
 
     bool specular_only = true;
     for (std::uint32_t bounce = 0;; ++bounce) {
-        const Hit hit = closest_hit(g, Ray{origin, 0.0f, direction, 3.402823466e38f});
+        const Hit hit = intersect(g, Ray{origin, 0.0f, direction, 3.402823466e38f});
         ++result.rays;
         if (!hit.found()) break;
         const TriangleRecord& tri = g.triangles[hit.triangle];

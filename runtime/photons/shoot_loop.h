@@ -19,6 +19,7 @@
 namespace kdpm {
 
 // One work item per path of the batch starting at path `first`.
+template <class ClosestHit = KdTreeClosestHit>
 struct ShootPathsPass {
     GeometryView geometry;
     LightSelection lights;
@@ -26,10 +27,11 @@ struct ShootPathsPass {
     std::uint64_t first = 0;
     PhotonHit* slots = nullptr;  // (max_bounces + 1) per path of the batch
     PhotonPathResult* results = nullptr;
+    ClosestHit intersect{};
 
     KDPM_HD void operator()(std::uint64_t i) const {
         const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
-        results[i] = trace_photon_path(geometry, lights, settings, first + i, slots + i * per_path);
+        results[i] = trace_photon_path(geometry, lights, settings, first + i, slots + i * per_path, intersect);
     }
 };
 
@@ -40,30 +42,55 @@ inline std::uint64_t shoot_batch_size(std::uint32_t max_bounces, std::uint64_t p
     return std::max<std::uint64_t>(1024, std::min(preferred, max_bytes / per_path));
 }
 
+// The items of `a` readable on the host: `a` itself on a device whose arrays are host memory
+// (CpuDevice), else a copy in `buffer`.
+template <class Device, class Array, class T>
+const T* items_on_host(Device& dev, const Array& a, std::vector<T>& buffer) {
+    if constexpr (requires { requires Device::arrays_on_host; }) {
+        return a.data();
+    } else {
+        dev.to_host(a, buffer);
+        return buffer.data();
+    }
+}
+
 // Paths first_path .. end_path - 1 (a shard, or all). geometry and lights hold arrays where `dev`
-// runs. Appends the stored hits to `hits` in path order and returns the rays traced.
-template <class Device>
+// runs. Appends the stored hits to `hits` in path order and returns the rays traced. `intersect`:
+// see trace_photon_path.
+template <class Device, class ClosestHit = KdTreeClosestHit>
 std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                           const ShootSettings& settings, std::uint64_t first_path, std::uint64_t end_path,
                           std::uint64_t batch, std::vector<PhotonHit>& hits,
-                          const std::function<void(double)>& progress) {
+                          const std::function<void(double)>& progress, const ClosestHit& intersect = ClosestHit{}) {
     const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
     std::uint64_t rays = 0;
     std::vector<PhotonHit> batch_hits;
     std::vector<PhotonPathResult> batch_results;
+    const std::size_t start_size = hits.size();
     for (std::uint64_t first = first_path; first < end_path; first += batch) {
         const std::uint64_t n = std::min(batch, end_path - first);
         dev.begin();
         // Every path writes its result; slots past a path's `stored` are never read.
         auto slots = dev.template scratch<PhotonHit>(n * per_path);
         auto results = dev.template scratch<PhotonPathResult>(n);
-        dev.launch(n, ShootPathsPass{geometry, lights, settings, first, slots.data(), results.data()});
-        dev.to_host(slots, batch_hits);
-        dev.to_host(results, batch_results);
+        dev.launch(n, ShootPathsPass<ClosestHit>{geometry, lights, settings, first, slots.data(), results.data(), intersect});
+        const PhotonHit* slot_items = items_on_host(dev, slots, batch_hits);
+        const PhotonPathResult* result_items = items_on_host(dev, results, batch_results);
+        // Room for this batch and, at the rate stored so far, for the batches to come (at least a
+        // quarter more than now), so that the hits are not copied again at every doubling.
+        std::uint64_t batch_stored = 0;
+        for (std::uint64_t i = 0; i < n; ++i) batch_stored += result_items[i].stored;
+        const std::uint64_t needed = hits.size() + batch_stored;
+        if (hits.capacity() < needed) {
+            const double rate = static_cast<double>(needed - start_size) / static_cast<double>(first + n - first_path);
+            const auto expected = start_size + static_cast<std::uint64_t>(rate * static_cast<double>(end_path - first_path));
+            hits.reserve(std::max({needed, expected, hits.capacity() + hits.capacity() / 4}));
+        }
         for (std::uint64_t i = 0; i < n; ++i) {
-            rays += batch_results[i].rays;
-            const PhotonHit* path_hits = batch_hits.data() + i * per_path;
-            hits.insert(hits.end(), path_hits, path_hits + batch_results[i].stored);
+            rays += result_items[i].rays;
+            // Most paths store a hit or two: one at a time beats a bulk copy call per path.
+            const PhotonHit* path_hits = slot_items + i * per_path;
+            for (std::uint32_t k = 0; k < result_items[i].stored; ++k) hits.push_back(path_hits[k]);
         }
         if (progress) progress(static_cast<double>(first + n - first_path) / static_cast<double>(end_path - first_path));
     }

@@ -63,6 +63,29 @@ GeometryFile closed_box_two_lights(float rho) {
     return file_of(s);
 }
 
+GeometryFile closed_box_with_glass_cube(float rho) {
+    Scene s = box_scene(rho, true);
+    MaterialRecord glass{};
+    glass.kind = static_cast<std::uint32_t>(MaterialKind::glass);
+    glass.ior = 1.5f;
+    glass.transmission[0] = glass.transmission[1] = glass.transmission[2] = 1.0f;
+    const auto material = static_cast<std::uint32_t>(s.materials.size());
+    s.materials.push_back(glass);
+    // Clear of the floor: no coplanar faces, whose ties two intersectors may break differently.
+    const float lo = 0.35f, hi = 0.65f, bottom = 0.05f, top = 0.35f;
+    const float p[8][3] = {{lo, bottom, lo}, {hi, bottom, lo}, {hi, bottom, hi}, {lo, bottom, hi},
+                           {lo, top, lo},    {hi, top, lo},    {hi, top, hi},    {lo, top, hi}};
+    add_quad(s, p[0], p[3], p[2], p[1], material);  // bottom
+    add_quad(s, p[4], p[5], p[6], p[7], material);  // top
+    add_quad(s, p[0], p[1], p[5], p[4], material);
+    add_quad(s, p[3], p[7], p[6], p[2], material);
+    add_quad(s, p[0], p[4], p[7], p[3], material);
+    add_quad(s, p[1], p[2], p[6], p[5], material);
+    const float l0[3] = {0.4f, 0.9f, 0.4f}, e1[3] = {0.2f, 0, 0}, e2[3] = {0, 0, 0.2f}, radiance[3] = {10, 5, 2};
+    s.lights.push_back(make_parallelogram_light(l0, e1, e2, radiance));
+    return file_of(s);
+}
+
 GeometryFile floor_under_small_light(float h) {
     Scene s;
     s.materials.push_back(diffuse(0.0f));

@@ -14,6 +14,10 @@ GeometryFile closed_box(float rho, bool mirror_floor = false);
 // facing down, and a 0.1 x 0.1 one of radiance 12 (three times the power) at y = 0.1 facing up.
 GeometryFile closed_box_two_lights(float rho);
 
+// closed_box(rho, mirror_floor = true) with a glass cube (ior 1.5, clear) just above the floor
+// under the light: paths through it and off the floor store caustic photons.
+GeometryFile closed_box_with_glass_cube(float rho);
+
 // A 2000 x 2000 black floor at y = 0 under a 0.01 x 0.01 card light at height h facing down.
 GeometryFile floor_under_small_light(float h);
 

@@ -82,6 +82,9 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
         t.rows.push_back({fmt("primary rays vs rtcIntersect1 (%.4f same hit)", p.ray_agreement), ms(p.kdpm_rays_ms),
                           ms(p.embree_rays_ms), ratio(p.kdpm_rays_ms, p.embree_rays_ms), "<= 1.25",
                           verdict(p.kdpm_rays_ms <= 1.25 * p.embree_rays_ms)});
+        t.rows.push_back({"photon shooting, kdpm / Embree photon tracer", ms(p.kdpm_shoot_ms), ms(p.embree_shoot_ms),
+                          ratio(p.kdpm_shoot_ms, p.embree_shoot_ms), "<= 1.5",
+                          verdict(p.kdpm_shoot_ms <= 1.5 * p.embree_shoot_ms)});
     } else {
         t.rows.push_back({"primary rays (Embree not installed)", ms(p.kdpm_rays_ms), "-", "-", "", ""});
     }
@@ -98,6 +101,14 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
                           target ? verdict(ours <= 0.6 * theirs) : ""});
     }
     std::string out = t.render(md);
+    if (p.embree) {
+        const PhotonAgreement& a = p.photon_agreement;
+        out += fmt("%sphoton cross-check (kdpm / Embree photon tracer): global map %llu / %llu stored (%.4f), caustic "
+                   "map %llu / %llu (%.4f); %.4f of paths stored the same hits\n",
+                   md ? "\n" : "", (unsigned long long)a.ours_global, (unsigned long long)a.theirs_global,
+                   a.global_agreement(), (unsigned long long)a.ours_caustic, (unsigned long long)a.theirs_caustic,
+                   a.caustic_agreement(), a.path_agreement());
+    }
     if (p.nanoflann) out += fmt("%skNN cross-check: %.4f of queries have nanoflann's k-th distance\n", md ? "\n" : "", p.knn_agreement);
     return out;
 }

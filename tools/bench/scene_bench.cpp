@@ -1,5 +1,6 @@
 #include "tools/bench/scene_bench.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <thread>
@@ -20,6 +21,7 @@
 #include "runtime/render/scene_loader.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/peer_embree.h"
+#include "tools/bench/peer_embree_photons.h"
 #include "tools/bench/peer_nanoflann.h"
 #include "tools/photons/irradiance_step.h"
 
@@ -107,6 +109,29 @@ void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, cons
     out.quality.same_hits = pf.hits.empty() ? 1.0 : static_cast<double>(same) / pf.hits.size();
 }
 
+#ifdef KDPM_HAVE_EMBREE
+// kdpm's shooter and the Embree photon tracer (the same shooter over rtcIntersect1) on the same
+// paths, runs interleaved so that both see the same machine; then whether they stored the same.
+void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, PeerFigures& peers) {
+    say(c, "Embree photon tracer: the same photon paths");
+    EmbreePhotonTracer tracer(g, static_cast<int>(std::thread::hardware_concurrency()));
+    ShootOptions shoot;
+    shoot.photons = c.photons;
+    shoot.max_bounces = c.bounces;
+    ShotPhotons ours, theirs;
+    std::vector<double> ours_ms, theirs_ms;
+    for (int f = 0; f < c.frames; ++f) {
+        ours_ms.push_back(median_ms(1, [&] { ours = shoot_photons(g, shoot); }));
+        theirs_ms.push_back(median_ms(1, [&] { theirs = tracer.shoot(shoot); }));
+    }
+    peers.kdpm_shoot_ms = median_of(ours_ms);
+    peers.embree_shoot_ms = median_of(theirs_ms);
+    float extent = 0.0f;
+    for (int a = 0; a < 3; ++a) extent = std::max(extent, g.info.bounds_max[a] - g.info.bounds_min[a]);
+    peers.photon_agreement = compare_photons(ours.hits, theirs.hits, 1e-5f * extent);
+}
+#endif
+
 void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, const PhotonMaps& maps,
                    SceneBenchResult& out) {
     const PhotonMapView& photons = maps.global;
@@ -158,6 +183,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         }
         peers.ray_agreement = hits.empty() ? 1.0 : static_cast<double>(same) / hits.size();
         peers.embree = true;
+        compare_photon_tracers(c, g, peers);
     }
 #endif
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tools/bench/mode_frames.h"
+#include "tools/bench/photon_agreement.h"
 
 namespace kdpm::bench {
 
@@ -49,6 +50,9 @@ struct PeerFigures {
     double ray_agreement = 0;                             // fraction of rays with the same hit triangle
     std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
     double knn_agreement = 0;                             // fraction of queries with the same k-th distance
+    // The same photon paths through kdpm's shooter and the Embree photon tracer, all threads.
+    double kdpm_shoot_ms = 0, embree_shoot_ms = 0;
+    PhotonAgreement photon_agreement;
 };
 
 struct SceneBenchResult {

@@ -1,4 +1,5 @@
-// kdpm-bench-photons [SCENE ...]: photon shooting speed, then k-nearest-photon queries per second
+// kdpm-bench-photons [SCENE ...]: photon shooting speed (beside the bench's Embree photon tracer
+// on the same paths, when Embree is installed), then k-nearest-photon queries per second
 // at the camera's primary hit points for k = 2, 4, ..., 256 on the VVH tree, the balanced tree
 // and nanoflann over the same photons, side by side. The trees are queried as the renderer
 // queries them: written as .kdp files and memory-mapped by PhotonMapFile. nanoflann is optional
@@ -14,6 +15,7 @@
 #include <ctime>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <unistd.h>
@@ -33,6 +35,10 @@
 #include "tools/photons/primary_hits.h"
 #if defined(KDPM_HAVE_NANOFLANN)
 #include "tools/bench/peer_nanoflann.h"
+#endif
+#if defined(KDPM_HAVE_EMBREE)
+#include "tools/bench/peer_embree_photons.h"
+#include "tools/bench/photon_agreement.h"
 #endif
 
 using namespace kdpm;
@@ -91,7 +97,8 @@ double queries_per_second(std::size_t n, const Body& body, bool single_thread) {
 
 struct BenchOptions {
     int photons = 0, bounces = 4, size = 512, leaf_size = 16, k_min = 2, k_max = 256, repeat = 3;
-    bool nanoflann = true;
+    int threads = 1;  // Embree's build workers
+    bool nanoflann = true, embree = true;
     bool single_thread = false;
 };
 
@@ -110,6 +117,23 @@ void bench_scene(const fs::path& input, const BenchOptions& o) {
     std::printf("%s: shot %llu photons in %.3f s: %.2f M photons/s, %zu stored, %.2f M rays/s\n", name.c_str(),
                 static_cast<unsigned long long>(shoot.photons), shoot_s, shoot.photons / shoot_s * 1e-6,
                 shot.hits.size(), shot.rays / shoot_s * 1e-6);
+#if defined(KDPM_HAVE_EMBREE)
+    if (o.embree) {
+        // The same paths through the bench's Embree photon tracer (kdpm's shooter over rtcIntersect1).
+        const bench::EmbreePhotonTracer tracer(geometry->view(), o.threads);
+        t0 = Clock::now();
+        const ShotPhotons theirs = tracer.shoot(shoot);
+        const double embree_s = seconds_since(t0);
+        float extent = 0.0f;
+        for (int a = 0; a < 3; ++a)
+            extent = std::max(extent, geometry->info().bounds_max[a] - geometry->info().bounds_min[a]);
+        const bench::PhotonAgreement agree = bench::compare_photons(shot.hits, theirs.hits, 1e-5f * extent);
+        std::printf("  Embree photon tracer: %.3f s (kdpm / Embree %.2fx), %zu stored (%llu caustic, kdpm %llu); "
+                    "%.4f of paths stored the same hits\n",
+                    embree_s, shoot_s / embree_s, theirs.hits.size(), (unsigned long long)agree.theirs_caustic,
+                    (unsigned long long)agree.ours_caustic, agree.path_agreement());
+    }
+#endif
 
     PhotonTreeOptions vvh_options, balanced_options;
     vvh_options.leaf_size = balanced_options.leaf_size = static_cast<std::uint32_t>(o.leaf_size);
@@ -185,7 +209,7 @@ int main(int argc, char** argv) {
     std::string extra1, extra2, extra3;
     BenchOptions o;
     int threads = 0;
-    bool no_nanoflann = false;
+    bool no_nanoflann = false, no_embree = false;
     cli::Args args("kdpm-bench-photons",
                    "Photon shooting speed and kNN gather queries/s (VVH vs balanced vs nanoflann) at primary hits.");
     args.positional("SCENE", &extra1, "a .kdg file or scene card (default: Cornell box, Sponza, Conference)", false)
@@ -199,9 +223,12 @@ int main(int argc, char** argv) {
         .option("k-min", &o.k_min, "K", "smallest k (default 2)", 1, 256)
         .option("repeat", &o.repeat, "N", "runs per measurement, the fastest counts (default 3)", 1, 100)
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
-        .flag("no-nanoflann", &no_nanoflann, "skip the nanoflann reference");
+        .flag("no-nanoflann", &no_nanoflann, "skip the nanoflann reference")
+        .flag("no-embree", &no_embree, "skip the Embree photon tracer");
     args.parse(argc, argv);
     o.nanoflann = !no_nanoflann;
+    o.embree = !no_embree;
+    o.threads = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
     o.single_thread = threads == 1;
     return cli::run_tool("kdpm-bench-photons", [&] {
         ThreadLimit limit(threads);

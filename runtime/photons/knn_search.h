@@ -165,7 +165,12 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
         for (std::uint32_t base = first; base < end; base += knn_detail::kLeafChunk) {
             const std::uint32_t m = end - base < knn_detail::kLeafChunk ? end - base : knn_detail::kLeafChunk;
             float d2[knn_detail::kLeafChunk];
-            knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
+            // A whole chunk where the arrays go on that far: a fixed trip count, no epilogue
+            // branches; the distances past the leaf's end are not looked at.
+            if (base + knn_detail::kLeafChunk <= map.photon_count)
+                knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, knn_detail::kLeafChunk, q, dist, d2);
+            else
+                knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
             for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
         }
 #endif

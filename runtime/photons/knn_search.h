@@ -73,6 +73,14 @@ KDPM_HD KDPM_INLINE void sift_up(float* d2, std::uint32_t* index, std::uint32_t 
     index[i] = item;
 }
 
+// Squared metric distances of m photons (coordinate arrays x, y, z) from q, into out[0..m).
+inline constexpr std::uint32_t kLeafChunk = 16;
+template <class Metric>
+KDPM_HD KDPM_INLINE void leaf_distances(const float* x, const float* y, const float* z, std::uint32_t m, glm::vec3 q,
+                                        const Metric& metric, float* out) {
+    for (std::uint32_t j = 0; j < m; ++j) out[j] = metric(x[j] - q.x, y[j] - q.y, z[j] - q.z);
+}
+
 }  // namespace knn_detail
 
 // Finds up to k photons (k clamped to 1..kMaxGatherK) with metric distance^2 < max_radius^2
@@ -89,6 +97,9 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
     k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
     float max_d2 = max_radius > 0.0f ? max_radius * max_radius : 3.402823466e38f;
     std::uint32_t found = 0;
+    // Copies the optimiser may keep in registers: stores into the heap could alias the originals.
+    const Metric dist = metric;
+    const Accept acc = accept;
     float* hd2 = heap.d2;
     std::uint32_t* hidx = heap.index;
 
@@ -131,9 +142,9 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             n = map.nodes[node];
         }
         const std::uint32_t first = n.first(), end = first + n.count();
-        for (std::uint32_t p = first; p < end; ++p) {
-            const float d2 = metric(map.x[p] - q.x, map.y[p] - q.y, map.z[p] - q.z);
-            if (d2 < max_d2 && accept(p)) {
+        // Photons in leaf order, each kept when closer than the current radius and accepted.
+        auto consider = [&](std::uint32_t p, float d2) {
+            if (d2 < max_d2 && acc(p)) {
                 if (found < k) {
                     knn_detail::sift_up(hd2, hidx, found, d2, p);
                     ++found;
@@ -143,7 +154,26 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                     max_d2 = hd2[0];
                 }
             }
+        };
+#if defined(__CUDA_ARCH__)
+        for (std::uint32_t p = first; p < end; ++p)
+            consider(p, dist(map.x[p] - q.x, map.y[p] - q.y, map.z[p] - q.z));
+#else
+        // On the CPU, the distances of a chunk of the leaf first, in a branch-free loop over the
+        // coordinate arrays that the compiler vectorises; each is the same float expression as
+        // the scalar one, and the photons are then considered in the same order.
+        for (std::uint32_t base = first; base < end; base += knn_detail::kLeafChunk) {
+            const std::uint32_t m = end - base < knn_detail::kLeafChunk ? end - base : knn_detail::kLeafChunk;
+            float d2[knn_detail::kLeafChunk];
+            // A whole chunk where the arrays go on that far: a fixed trip count, no epilogue
+            // branches; the distances past the leaf's end are not looked at.
+            if (base + knn_detail::kLeafChunk <= map.photon_count)
+                knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, knn_detail::kLeafChunk, q, dist, d2);
+            else
+                knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
+            for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
         }
+#endif
         // Next subtree whose cell is still closer than the current radius.
         for (;;) {
             if (top == 0) return found;

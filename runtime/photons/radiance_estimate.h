@@ -56,6 +56,7 @@ struct SurfacePhotonFilter {
     std::uint32_t exclude_flags;
     bool check_flags;  // false when no flag or bounce can reject (skips a load per photon)
     bool quick;        // the margins hold: |normal| ~ 1 and min_normal_cos in [0.05, 1]
+    float cos2_above, cos2_below;  // min_normal_cos^2 +- 1e-3: the cosine test's margins, once per query
 
     KDPM_HD SurfacePhotonFilter(const PhotonMapView& map, glm::vec3 n, float min_cos, std::uint32_t min_bounce_,
                                 std::uint32_t exclude)
@@ -63,6 +64,9 @@ struct SurfacePhotonFilter {
           min_bounce(min_bounce_), exclude_flags(exclude), check_flags(min_bounce_ > 0 || exclude != 0) {
         const float n2 = n.x * n.x + n.y * n.y + n.z * n.z;
         quick = n2 > 0.999f && n2 < 1.001f && (min_cos <= -1.0f || (min_cos >= 0.05f && min_cos <= 1.0f));
+        const float c2 = min_cos * min_cos;
+        cos2_above = c2 + 1e-3f;
+        cos2_below = c2 - 1e-3f;
     }
 
     // The octahedral vector as decode_octahedral folds it, unnormalized (length in [0.57, 1]).
@@ -108,9 +112,8 @@ struct SurfacePhotonFilter {
         const float c = r[0] * normal.x + r[1] * normal.y + r[2] * normal.z;
         if (c <= 0.0f) return false;  // min_normal_cos >= 0.05 here
         const float l2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-        const float c2 = min_normal_cos * min_normal_cos;
-        if (c * c > (c2 + 1e-3f) * l2) return true;
-        if (c * c < (c2 - 1e-3f) * l2) return false;
+        if (c * c > cos2_above * l2) return true;
+        if (c * c < cos2_below * l2) return false;
         return exact(p);
     }
 };

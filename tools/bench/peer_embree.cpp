@@ -80,4 +80,44 @@ void EmbreePeer::intersect(std::span<const PeerRay> rays, std::span<PeerHit> hit
     }, 256);
 }
 
+void EmbreePeer::intersect16(std::span<const PeerRay> rays, std::uint32_t width, std::uint32_t height,
+                             std::span<PeerHit> hits) const {
+    constexpr std::uint32_t kSide = 4;  // 4x4 pixels per packet
+    RTCScene scene = state_->scene;
+    const std::uint32_t tiles_x = (width + kSide - 1) / kSide, tiles_y = (height + kSide - 1) / kSide;
+    cpu_parallel_for(static_cast<std::uint64_t>(tiles_x) * tiles_y, [&](std::uint64_t tile) {
+        const std::uint32_t x0 = static_cast<std::uint32_t>(tile % tiles_x) * kSide;
+        const std::uint32_t y0 = static_cast<std::uint32_t>(tile / tiles_x) * kSide;
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        alignas(64) RTCRayHit16 rh{};  // RTCRay16 needs 64-byte alignment
+        alignas(64) int valid[16];
+        std::size_t pixel[16];
+        for (std::uint32_t j = 0; j < 16; ++j) {
+            const std::uint32_t x = x0 + j % kSide, y = y0 + j / kSide;
+            valid[j] = x < width && y < height ? -1 : 0;
+            pixel[j] = valid[j] ? static_cast<std::size_t>(y) * width + x : 0;
+            const PeerRay& r = rays[pixel[j]];
+            rh.ray.org_x[j] = r.origin[0];
+            rh.ray.org_y[j] = r.origin[1];
+            rh.ray.org_z[j] = r.origin[2];
+            rh.ray.dir_x[j] = r.direction[0];
+            rh.ray.dir_y[j] = r.direction[1];
+            rh.ray.dir_z[j] = r.direction[2];
+            rh.ray.tnear[j] = 0.0f;
+            rh.ray.tfar[j] = std::numeric_limits<float>::infinity();
+            rh.ray.mask[j] = ~0u;
+            rh.hit.geomID[j] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect16(valid, scene, &context, &rh);
+        for (std::uint32_t j = 0; j < 16; ++j) {
+            if (!valid[j]) continue;
+            hits[pixel[j]] = rh.hit.geomID[j] == RTC_INVALID_GEOMETRY_ID
+                                 ? PeerHit{std::numeric_limits<float>::infinity(), 0xffffffffu}
+                                 : PeerHit{rh.ray.tfar[j], rh.hit.primID[j]};
+        }
+    }, 16);
+}
+
 }  // namespace kdpm::bench

@@ -1,6 +1,7 @@
 #pragma once
 // Embree 3, a peer for kdpm-bench only (never linked by the toolchain or runtime): its
-// BVH builds (high and medium quality) and rtcIntersect1 over the same triangles and rays as kdpm.
+// BVH builds (high and medium quality), rtcIntersect1 and rtcIntersect16 packets over the same
+// triangles and rays as kdpm.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -29,6 +30,10 @@ public:
     // Traces one ray per element with rtcIntersect1 through the last build, in parallel over
     // `threads` (oneTBB).
     void intersect(std::span<const PeerRay> rays, std::span<PeerHit> hits) const;
+    // The same with rtcIntersect16: rays are a width x height image in row-major order, traced
+    // as one coherent 16-ray packet per 4x4 pixel tile (edge tiles masked), tiles in parallel.
+    void intersect16(std::span<const PeerRay> rays, std::uint32_t width, std::uint32_t height,
+                     std::span<PeerHit> hits) const;
 
 private:
     struct State;

@@ -153,7 +153,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 
 #ifdef KDPM_HAVE_EMBREE
     {
-        say(c, "Embree: medium- and high-quality BVH builds and rtcIntersect1");
+        say(c, "Embree: medium- and high-quality BVH builds, rtcIntersect1 and rtcIntersect16");
         std::vector<float> vertices;
         vertices.reserve(g.triangle_count * 9);
         for (std::uint32_t t = 0; t < g.triangle_count; ++t) {
@@ -173,15 +173,25 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         std::vector<PeerHit> hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
         peers.embree_rays_ms = median_ms(c.frames, [&] { embree.intersect(p.rays, hits); });
-        std::size_t same = 0;
-        for (std::size_t i = 0; i < hits.size(); ++i) {
-            bool ours_hit = p.hits[i].found(), theirs_hit = hits[i].triangle != 0xffffffffu;
-            if (ours_hit == theirs_hit &&
-                (!ours_hit || p.hits[i].triangle == hits[i].triangle ||
-                 std::fabs(p.hits[i].t - hits[i].t) <= 1e-4f * std::max(1.0f, hits[i].t)))
-                ++same;
-        }
-        peers.ray_agreement = hits.empty() ? 1.0 : static_cast<double>(same) / hits.size();
+        // Fraction of rays whose hit agrees with ours: same triangle, or the same distance (ties).
+        auto agreement = [&](const std::vector<PeerHit>& theirs) {
+            std::size_t same = 0;
+            for (std::size_t i = 0; i < theirs.size(); ++i) {
+                bool ours_hit = p.hits[i].found(), theirs_hit = theirs[i].triangle != 0xffffffffu;
+                if (ours_hit == theirs_hit &&
+                    (!ours_hit || p.hits[i].triangle == theirs[i].triangle ||
+                     std::fabs(p.hits[i].t - theirs[i].t) <= 1e-4f * std::max(1.0f, theirs[i].t)))
+                    ++same;
+            }
+            return theirs.empty() ? 1.0 : static_cast<double>(same) / theirs.size();
+        };
+        peers.ray_agreement = agreement(hits);
+        // The same rays as 16-ray packets of 4x4 pixel tiles (the rays are in row-major order).
+        std::vector<PeerHit> packet_hits(p.rays.size());
+        embree.intersect16(p.rays, c.width, c.height, packet_hits);  // warm-up
+        peers.embree16_rays_ms =
+            median_ms(c.frames, [&] { embree.intersect16(p.rays, c.width, c.height, packet_hits); });
+        peers.packet_agreement = agreement(packet_hits);
         peers.embree = true;
         compare_photon_tracers(c, g, peers);
     }

@@ -48,6 +48,8 @@ struct PeerFigures {
     double nanoflann_build_ms = 0, kdpm_photon_trees_ms = 0;    // global + caustic trees, same photons
     double embree_rays_ms = 0, kdpm_rays_ms = 0;          // same primary rays, all threads
     double ray_agreement = 0;                             // fraction of rays with the same hit triangle
+    double embree16_rays_ms = 0;                          // rtcIntersect16, 4x4-pixel packets, same rays
+    double packet_agreement = 0;                          // the same for the packets' hits
     std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
     double knn_agreement = 0;                             // fraction of queries with the same k-th distance
     // The same photon paths through kdpm's shooter and the Embree photon tracer, all threads.

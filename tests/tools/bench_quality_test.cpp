@@ -92,10 +92,12 @@ TEST_CASE("kdpm-bench-quality measures error against time and caches its referen
     CHECK(path_relmse(second.output) == relmse);
 
     // Another key (fewer reference samples): another reference, rendered; the first stays.
-    const auto third = test::run_tool(base + " --scenes cornell-box --reference-spp 128");
+    // Its photon map with unlimited bounces, as the reference's (the first had the card's).
+    CHECK_THAT(first.output, Catch::Contains("photons of up to 4 bounces"));
+    const auto third = test::run_tool(base + " --scenes cornell-box --reference-spp 128 --photon-bounces 0");
     INFO(third.output);
     REQUIRE(third.exit_code == 0);
-    CHECK_THAT(third.output, Catch::Contains("rendered in"));
+    CHECK_THAT(third.output, Catch::Contains("rendered in") && Catch::Contains("photons of up to 63 bounces"));
     CHECK(references(dir / "work").size() == 2);
 
     // A damaged cache file is refused in one line, and left as it is.
@@ -114,7 +116,7 @@ TEST_CASE("kdpm-bench-quality refuses bad options in one line", "[tools][bench]"
     const std::string base = "kdpm-bench-quality --scenes cornell-box --repo " + test::source_path("") + " --work " +
                              (dir / "work").string() + " --size 8 --reference-spp 1 --max-rungs 1 --photons 100 --quiet ";
     for (const char* bad : {"--size 0", "--seconds -1", "--threads 0", "--reference-spp x", "--reference-backend gpu",
-                            "--no-such-option"}) {
+                            "--photon-bounces 256", "--no-such-option"}) {
         const auto r = test::run_tool(base + bad);
         INFO(bad << ": " << r.output);
         CHECK(r.exit_code == 2);

@@ -22,17 +22,26 @@ namespace {
 
 // The scene's .kdg and .kdp as the toolchain's defaults make them (the .kdp with the irradiance
 // map final gathering reads); builds are deterministic, so a rebuild gives the same bytes.
-void build_scene_files(const QualityConfig& c, const std::filesystem::path& kdg, const std::filesystem::path& kdp) {
+// "Unlimited" photon bounces, as sppm's: Russian roulette ends nearly every path long before.
+constexpr std::uint32_t kUnlimitedPhotonBounces = 63;
+
+std::uint32_t photon_bounces_of(const QualityConfig& c, const Scene& scene) {
+    if (c.photon_bounces < 0) return scene.bounces;
+    return c.photon_bounces == 0 ? kUnlimitedPhotonBounces : static_cast<std::uint32_t>(c.photon_bounces);
+}
+
+std::uint32_t build_scene_files(const QualityConfig& c, const std::filesystem::path& kdg, const std::filesystem::path& kdp) {
     if (c.say) c.say("building the .kdg and .kdp");
     const Scene scene = load_scene_input(c.card);
     build_geometry_file(scene, KdBuildParams{}).writer.write(kdg);
     const GeometryFile geometry = GeometryFile::open(kdg);
     ShootOptions shoot;
     shoot.photons = c.photons ? c.photons : scene.photons;
-    shoot.max_bounces = scene.bounces;
+    shoot.max_bounces = photon_bounces_of(c, scene);
     ShotPhotons shot = shoot_photons(geometry.view(), shoot);
     PhotonHitSet set{shot.info, std::move(shot.hits)};
     build_photon_map_file(set, PhotonTreeOptions{}, {}, every_nth_photon_irradiance(4, 64)).writer.write(kdp);
+    return shoot.max_bounces;
 }
 
 struct RungSettings {
@@ -71,14 +80,15 @@ std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
             return RungSettings{plural(s.spp, "spp", "spp"), s};
         };
     };
-    // Final gathering: more gather rays (less noise in each point's indirect light) up to 1024,
-    // then more samples per pixel.
+    // Final gathering: samples per pixel and gather rays doubled in turn (rays up to 1024): at one
+    // sample the image is sampled at pixel centres, and the edges' aliasing, not the gather
+    // noise, bounds its error however many rays are sent.
     auto by_gather_rays = [base](std::uint32_t first, bool cache) {
         return [base, first, cache](int i) -> std::optional<RungSettings> {
             RenderSettings s = base(RenderMode::final_gather);
             s.irradiance_cache = cache;
             std::uint32_t rays = first, spp = 1;
-            for (int j = 0; j < i; ++j) (rays < 1024 ? rays : spp) *= 2;
+            for (int j = 0; j < i; ++j) (j % 2 == 0 || rays >= 1024 ? spp : rays) *= 2;
             if (spp > 1024) return std::nullopt;
             s.gather_rays = rays;
             s.spp = spp;
@@ -139,7 +149,7 @@ QualityResult run_quality_bench(const QualityConfig& c) {
     out.seconds = c.seconds;
     const auto kdg = c.work_dir / (c.name + ".kdg");
     const auto kdp = c.work_dir / (c.name + ".kdp");
-    build_scene_files(c, kdg, kdp);
+    out.photon_bounces = build_scene_files(c, kdg, kdp);
     const LoadedScene loaded = LoadedScene::load(kdg, kdp);
 
     ReferenceKey key;

@@ -24,6 +24,7 @@ struct QualityConfig {
     BackendRequest reference_backend = BackendRequest::automatic;  // CUDA renders it much sooner
     std::uint32_t max_bounces = 0;  // path reference, path and sppm ladders; 0: unlimited
     std::uint32_t photons = 0;      // photon paths of the .kdp; 0: the scene card's
+    int photon_bounces = -1;        // bounces of the .kdp's photons; -1: the scene card's; 0: unlimited
     double seconds = 2.0;           // the equal-time budget
     double sppm_seconds = 30.0;     // the sppm curve runs until a rung takes this long
     int max_rungs = 12;             // per ladder
@@ -47,6 +48,7 @@ struct Ladder {
 struct QualityResult {
     std::string name;
     std::uint32_t size = 0, reference_spp = 0, max_bounces = 0;
+    std::uint32_t photon_bounces = 0;  // of the .kdp the photon modes read
     int threads = 0;
     double seconds = 0;
     std::filesystem::path reference_file;

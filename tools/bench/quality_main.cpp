@@ -32,6 +32,7 @@ fs::path default_work_dir() {
 int main(int argc, char** argv) {
     bool markdown = false, quiet = false;
     int size = 512, threads = 2, reference_spp = 4096, max_bounces = 0, photons = 0, max_rungs = 12;
+    int photon_bounces = -1;
     double seconds = 2.0, sppm_seconds = 30.0;
     std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
     BackendRequest reference_backend = BackendRequest::automatic;
@@ -49,6 +50,8 @@ int main(int argc, char** argv) {
         .option("max-bounces", &max_bounces, "N",
                 "diffuse bounces of the reference, path and sppm (default 0: unlimited)", 0, 1000)
         .option("photons", &photons, "N", "photon paths of the .kdp (default: the scene card's)", 0, 1 << 26)
+        .option("photon-bounces", &photon_bounces, "N",
+                "bounces of the .kdp's photons (default: the scene card's; 0: unlimited, as the reference's default)", 0, 255)
         .option("seconds", &seconds, "S", "the equal-time budget (default 2)", 1e-3, 1e6)
         .option("sppm-seconds", &sppm_seconds, "S", "sppm's curve runs until a rung takes this long (default 30)", 0, 1e6)
         .option("max-rungs", &max_rungs, "N", "most settings per mode (default 12)", 1, 17)
@@ -78,6 +81,7 @@ int main(int argc, char** argv) {
             c.reference_backend = reference_backend;
             c.max_bounces = static_cast<std::uint32_t>(max_bounces);
             c.photons = static_cast<std::uint32_t>(photons);
+            c.photon_bounces = photon_bounces;
             c.seconds = seconds;
             c.sppm_seconds = sppm_seconds;
             c.max_rungs = max_rungs;

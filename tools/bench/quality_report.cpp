@@ -104,6 +104,8 @@ std::string format_quality_report(const std::vector<QualityResult>& results, boo
                    r.reference_reused ? "reused from" : fmt("rendered in %.1f s (%s), cached as", r.reference_render_seconds,
                                                         r.reference_backend == "cpu" ? "CPU, every core" : r.reference_backend.c_str()).c_str(),
                    r.reference_file.string().c_str());
+        out += fmt("%sphoton map (photons, direct+photons, final-gather): photons of up to %u bounces\n", md ? "\n" : "",
+                   r.photon_bounces);
         out += fmt("%s(path shares its first samples with the reference: its relMSE at n spp reads low by a factor 1 - n/%u)\n\n",
                    md ? "\n" : "", r.reference_spp);
         out += error_table(r, md);

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "runtime/geometry/triangle_intersect.h"
+#include "runtime/geometry/kd_traversal.h"
 #include "runtime/photons/photon_shooter.h"
 #include "runtime/photons/shoot_on_cpu.h"
 #include "tests/photons/shooting_scenes.h"
@@ -16,15 +16,7 @@ namespace {
 
 // Every triangle tested, nearest hit kept: the reference for the kd-tree walk.
 struct BruteForceClosestHit {
-    Hit operator()(const GeometryView& g, const Ray& ray) const {
-        Hit best = miss(ray.tmax);
-        for (std::uint32_t i = 0; i < g.triangle_count; ++i) {
-            float t, u, v;
-            if (intersect_triangle(g.triangles[i], ray.origin, ray.direction, ray.tmin, best.t, t, u, v))
-                best = Hit{t, i, u, v};
-        }
-        return best;
-    }
+    Hit operator()(const GeometryView& g, const Ray& ray) const { return closest_hit_brute_force(g, ray); }
 };
 
 struct NeverHits {

@@ -11,6 +11,15 @@ namespace {
 constexpr std::size_t kWarningsPerTexture = 3;
 }  // namespace
 
+std::optional<TextureImage> read_texture_image(const std::filesystem::path& path, std::string& why) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        why = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
+        return std::nullopt;
+    }
+    return decode_texture_file(path, why);
+}
+
 float srgb_to_linear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }

@@ -20,8 +20,13 @@ struct TextureImage {
     std::vector<Texel> texels;
 };
 
-// The image, or nullopt with `why` set (one line) when it cannot be used.
+// The image, or nullopt with `why` set (one line) when it cannot be used. Only regular files are
+// opened: a FIFO or a device would block or never end.
 std::optional<TextureImage> read_texture_image(const std::filesystem::path& path, std::string& why);
+
+// The image decoder of this build (OpenImageIO, or kdpm's PPM reader without it), for a path
+// read_texture_image has found to be a regular file.
+std::optional<TextureImage> decode_texture_file(const std::filesystem::path& path, std::string& why);
 
 // sRGB transfer function decoded to linear.
 float srgb_to_linear(float encoded);

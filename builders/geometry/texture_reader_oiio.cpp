@@ -8,12 +8,7 @@
 
 namespace kdpm {
 
-std::optional<TextureImage> read_texture_image(const std::filesystem::path& path, std::string& why) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        why = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
-        return std::nullopt;
-    }
+std::optional<TextureImage> decode_texture_file(const std::filesystem::path& path, std::string& why) {
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) {
         why = "cannot read image: " + OIIO::geterror();

@@ -39,18 +39,27 @@ void check_checker(const Image& image, std::uint32_t size) {
     CHECK(right == 64);
 }
 
+// The shipped textured quad built into a .kdg in memory, with its scene and file kept alive for
+// the views the renderer reads.
+struct BuiltTexturedQuad {
+    Scene scene = load_scene_input(test::source_path("scenes/textured-quad/textured-quad.json"));
+    GeometryFile file = GeometryFile::from_bytes(build_geometry_file(scene, KdBuildParams{}).writer.bytes(),
+                                                 "textured-quad.kdg");
+    SceneViews views() const {
+        SceneViews v;
+        v.geometry = file.view();
+        v.camera = file.camera();
+        return v;
+    }
+};
+
 }  // namespace
 
 TEST_CASE("the textured quad renders its checker in direct light and in the path tracer", "[texture][render]") {
-    Scene scene = load_scene_input(test::source_path("scenes/textured-quad/textured-quad.json"));
-    REQUIRE(scene.warnings.empty());
-    REQUIRE(scene.textures.size() == 1);
-    GeometryBuild build = build_geometry_file(scene, KdBuildParams{});
-    const GeometryFile file = GeometryFile::from_bytes(build.writer.bytes(), "textured-quad.kdg");
-    SceneViews views;
-    views.geometry = file.view();
-    views.camera = file.camera();
-    Renderer renderer(views, BackendKind::cpu);
+    const BuiltTexturedQuad quad;
+    REQUIRE(quad.scene.warnings.empty());
+    REQUIRE(quad.scene.textures.size() == 1);
+    Renderer renderer(quad.views(), BackendKind::cpu);
     const std::uint32_t size = 64;
     RenderSettings settings;
     settings.width = settings.height = size;
@@ -63,13 +72,8 @@ TEST_CASE("the textured quad renders its checker in direct light and in the path
 }
 
 TEST_CASE("camera rays filter the texture over their pixel: a checker finer than the pixels averages out", "[texture][render]") {
-    Scene scene = load_scene_input(test::source_path("scenes/textured-quad/textured-quad.json"));
-    GeometryBuild build = build_geometry_file(scene, KdBuildParams{});
-    const GeometryFile file = GeometryFile::from_bytes(build.writer.bytes(), "textured-quad.kdg");
-    SceneViews views;
-    views.geometry = file.view();
-    views.camera = file.camera();
-    Renderer renderer(views, BackendKind::cpu);
+    const BuiltTexturedQuad quad;
+    Renderer renderer(quad.views(), BackendKind::cpu);
     // 3 x 3 pixels over 32 x 32 texels (8 x 8 squares): each pixel covers 10.7 x 10.7 texels, so
     // it reads mip levels 3 and 4, which are uniform (0.5, 0.5, 0) (a level-3 texel averages
     // 2 x 2 squares); level 0 at the pixel centres would read one square's colour.

@@ -13,6 +13,8 @@ namespace kdpm {
 struct CpuDevice {
     // Arrays are host memory: a caller may read them in place instead of copying with to_host.
     static constexpr bool arrays_on_host = true;
+    // The photon gather runs a tile of pixels per work item (PhotonTileGatherPass).
+    static constexpr bool gathers_by_tile = true;
     template <class T>
     struct Array {
         std::unique_ptr<T[]> items;

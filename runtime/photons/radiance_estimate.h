@@ -166,19 +166,32 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
 }
 
 // `normal`: unit surface normal on the viewer's side; `albedo`: the diffuse reflectance.
+//
+// radius_hint > 0: a radius that probably holds k accepted photons, e.g. a neighbouring query's
+// k-th distance plus the distance between the two points (exactly such a bound for the same
+// filter and a sphere). The k-nearest search then starts with that radius instead of
+// max_radius, which prunes most of the tree before the first k photons are found; when it holds
+// fewer than k, the search runs again out to max_radius. Either way the k nearest are found (a
+// search limited to r that finds k photons has found the k nearest overall); only their order in
+// the heap may differ, and with it the last bits of the sum, and which of several photons at
+// exactly the k-th distance is kept.
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                   glm::vec3 albedo, const RadianceEstimateParams& params,
-                                                  KnnHeap& heap) {
+                                                  KnnHeap& heap, float radius_hint = 0.0f) {
     RadianceEstimate out;
     const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
     if (params.fixed_radius) return estimate_radiance_in_radius(map, position, albedo, params, filter);
-    std::uint32_t found =
-        params.flatten > 0.0f
-            ? knn_search(map, position, params.k, params.max_radius, DiscMetric{normal, params.flatten}, filter, heap)
-            : knn_search(map, position, params.k, params.max_radius, EuclideanMetric{}, filter, heap);
+    const std::uint32_t k = params.k < 1 ? 1 : (params.k > kMaxGatherK ? kMaxGatherK : params.k);
+    auto search = [&](float limit) {
+        return params.flatten > 0.0f
+                   ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, filter, heap)
+                   : knn_search(map, position, k, limit, EuclideanMetric{}, filter, heap);
+    };
+    const bool hint_tighter = radius_hint > 0.0f && (params.max_radius <= 0.0f || radius_hint < params.max_radius);
+    std::uint32_t found = search(hint_tighter ? radius_hint : params.max_radius);
+    if (hint_tighter && found < k) found = search(params.max_radius);
     out.count = found;
     if (found == 0) return out;
-    const std::uint32_t k = params.k < 1 ? 1 : (params.k > kMaxGatherK ? kMaxGatherK : params.k);
     float r2 = heap.d2[0];
     if (found < k && params.max_radius > 0.0f) r2 = params.max_radius * params.max_radius;
     if (!(r2 > 0.0f)) return out;

@@ -15,6 +15,7 @@
 #include "runtime/render/irradiance_cache.h"
 #include "runtime/render/path_pass.h"
 #include "runtime/render/photon_gather_pass.h"
+#include "runtime/render/photon_tile_gather_pass.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/render/shade_pass.h"
 #include "runtime/render/sppm_loop.h"
@@ -103,6 +104,8 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
             else if (plan.final_gather)
                 dev.launch(pixels, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
                                                           plan.settings.max_depth, plan.epsilon));
+            else if constexpr (requires { requires Device::gathers_by_tile; })
+                dev.launch(PhotonTileGatherPass::work_items(fb), PhotonTileGatherPass{gather});
             else
                 dev.launch(pixels, gather);  // one item per pixel, over its vertices
             times.photon_gather_ms += watch.lap_ms();

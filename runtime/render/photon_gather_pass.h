@@ -40,17 +40,24 @@ struct PhotonGatherPass {
     // One work item per pixel (tiled order), looping over the pixel's diffuse vertices: most
     // pixels have one, so launching per vertex slot would mostly start items that do nothing.
     KDPM_HD void operator()(std::uint64_t item) const {
-        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
-        const std::uint32_t count = frame.vertex_count[pixel];
         KnnHeap heap;
+        gather_pixel(tiled_pixel(item, frame.width, frame.height), heap,
+                     [](const PhotonMapView& map, bool, const DiffuseVertex& v, std::uint32_t,
+                        const RadianceEstimateParams& params, KnnHeap& h) {
+                         return estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h).radiance;
+                     });
+    }
+
+    // The gathered radiance of each of the pixel's diffuse vertices; estimate(map, caustic?,
+    // vertex, vertex index, params, heap) -> radiance (PhotonTileGatherPass searches its own way).
+    template <class Estimate>
+    KDPM_HD void gather_pixel(std::uint64_t pixel, KnnHeap& heap, const Estimate& estimate) const {
+        const std::uint32_t count = frame.vertex_count[pixel];
         for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
             const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
             const DiffuseVertex& v = frame.vertices[slot];
-            glm::vec3 l =
-                estimate_radiance(maps.global, v.position, v.shading_normal, v.albedo, global_params, heap).radiance;
-            if (use_caustic_map && maps.caustic.node_count > 0)
-                l += estimate_radiance(maps.caustic, v.position, v.shading_normal, v.albedo, caustic_params, heap)
-                         .radiance;
+            glm::vec3 l = estimate(maps.global, false, v, i, global_params, heap);
+            if (use_caustic_map && maps.caustic.node_count > 0) l += estimate(maps.caustic, true, v, i, caustic_params, heap);
             frame.gathered[slot] = l;
         }
     }

@@ -14,10 +14,12 @@ TEST_CASE("CPU renders are identical with 1 and 2 threads", "[render][determinis
     const test::InMemoryPhotons photons(scene.views.geometry, 20000, 3, 32);
     scene.views.photons = photons.maps();
     RenderSettings settings;
-    // Final gathering with the irradiance cache (the default) and without it.
-    const int variant = GENERATE(0, 1, 2, 3, 4);
-    const RenderMode modes[] = {RenderMode::direct, RenderMode::path, RenderMode::sppm, RenderMode::final_gather,
-                                RenderMode::final_gather};
+    // Final gathering with the irradiance cache (the default) and without it; the photon gather
+    // (by tile on the CPU).
+    const int variant = GENERATE(0, 1, 2, 3, 4, 5, 6);
+    const RenderMode modes[] = {RenderMode::direct,       RenderMode::path,    RenderMode::sppm,
+                                RenderMode::final_gather, RenderMode::final_gather, RenderMode::photons,
+                                RenderMode::direct_photons};
     settings.mode = modes[variant];
     settings.irradiance_cache = variant != 4;
     settings.gather_rays = 4;

@@ -1,0 +1,43 @@
+#pragma once
+// Search radii from the queries just made, for the next one nearby: if k photons lie within r of
+// a point p, they lie within r + |q - p| of q, so that bounds q's k-th distance (exactly for the
+// same filter and a sphere; a flattened search or another surface normal may need more, which
+// estimate_radiance's second search covers). The smallest bound over the last few queries: in
+// an 8-pixel-wide tile those are the pixel to the left and the row above.
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "formats/host_device.h"
+
+namespace kdpm {
+
+struct RadiusHints {
+    static constexpr std::uint32_t kRemembered = 8;
+    float px[kRemembered], py[kRemembered], pz[kRemembered], radius[kRemembered];
+    std::uint32_t count = 0, next = 0;
+
+    // 0 (no hint) until a query has been remembered.
+    KDPM_HD float hint(glm::vec3 q) const {
+        float best = 0.0f;
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const float dx = q.x - px[i], dy = q.y - py[i], dz = q.z - pz[i];
+            const float bound = radius[i] + sqrtf(dx * dx + dy * dy + dz * dz);
+            if (best == 0.0f || bound < best) best = bound;
+        }
+        return best;
+    }
+
+    // A query at p whose k-th photon lay at distance r (only when it found all k).
+    KDPM_HD void remember(glm::vec3 p, float r) {
+        px[next] = p.x;
+        py[next] = p.y;
+        pz[next] = p.z;
+        radius[next] = r;
+        next = next + 1 == kRemembered ? 0 : next + 1;
+        if (count < kRemembered) ++count;
+    }
+};
+
+}  // namespace kdpm

@@ -9,6 +9,7 @@
 #include "formats/photon_layout.h"
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/photons/radiance_estimate.h"
+#include "runtime/photons/radius_hints.h"
 
 namespace kdpm {
 
@@ -28,8 +29,10 @@ std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& gl
                                                          const std::vector<std::uint32_t>& slots,
                                                          const RadianceEstimateParams& params);
 
-// One photon's value, as precompute_irradiance computes it (tests compare against it).
+// One photon's value, as precompute_irradiance computes it (tests compare against it). hints:
+// the radii of the searches just made nearby (the search starts from them; the same photons).
 PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uint32_t slot,
-                                           const RadianceEstimateParams& params, KnnHeap& heap);
+                                           const RadianceEstimateParams& params, KnnHeap& heap,
+                                           RadiusHints* hints = nullptr);
 
 }  // namespace kdpm

@@ -59,14 +59,18 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
     StackEntry stack[kMaxKdDepth];
     std::uint32_t sp = 0;
     std::uint32_t node = 0;
+    // Plain arrays for the per-node axis lookups: glm's vec3 operator[] is a switch.
+    const float org[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const float inv[3] = {inv_dir.x, inv_dir.y, inv_dir.z};
+    const bool dir_not_up[3] = {ray.direction.x <= 0.0f, ray.direction.y <= 0.0f, ray.direction.z <= 0.0f};
     for (;;) {
         KdNode n = g.nodes[node];
         while (!n.is_leaf()) {
             const int axis = n.axis();
             const float split = n.split();
-            const float o = ray.origin[axis];
-            const float tplane = (split - o) * inv_dir[axis];
-            const bool below_first = o < split || (o == split && ray.direction[axis] <= 0.0f);
+            const float o = org[axis];
+            const float tplane = (split - o) * inv[axis];
+            const bool below_first = o < split || (o == split && dir_not_up[axis]);
             const std::uint32_t below = node + 1, above = n.above_child();
             const std::uint32_t first = below_first ? below : above;
             const std::uint32_t second = below_first ? above : below;

@@ -14,6 +14,7 @@
 
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
+#include "runtime/photons/filter_memo.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/radius_search.h"
 #include "runtime/shading/constants.h"
@@ -175,14 +176,26 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
 // search limited to r that finds k photons has found the k nearest overall); only their order in
 // the heap may differ, and with it the last bits of the sum, and which of several photons at
 // exactly the k-th distance is kept.
+//
+// memo (CPU only; may be null): the filter's decisions remembered from earlier searches (FilterMemo).
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                   glm::vec3 albedo, const RadianceEstimateParams& params,
-                                                  KnnHeap& heap, float radius_hint = 0.0f) {
+                                                  KnnHeap& heap, float radius_hint = 0.0f,
+                                                  FilterMemo* memo = nullptr) {
     RadianceEstimate out;
     const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
     if (params.fixed_radius) return estimate_radiance_in_radius(map, position, albedo, params, filter);
     const std::uint32_t k = params.k < 1 ? 1 : (params.k > kMaxGatherK ? kMaxGatherK : params.k);
     auto search = [&](float limit) {
+#if !defined(__CUDA_ARCH__)
+        if (memo) {
+            memo->use_for(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
+            const MemoizedFilter<SurfacePhotonFilter> memoized{&filter, memo};
+            return params.flatten > 0.0f
+                       ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, memoized, heap)
+                       : knn_search(map, position, k, limit, EuclideanMetric{}, memoized, heap);
+        }
+#endif
         return params.flatten > 0.0f
                    ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, filter, heap)
                    : knn_search(map, position, k, limit, EuclideanMetric{}, filter, heap);

@@ -1,14 +1,16 @@
 #pragma once
 // The photon gather of the CPU backend: a work item gathers the 64 pixels of an 8x8 tile (64
-// consecutive work items of the tiled order) in turn, each search of a first diffuse vertex
-// starting from the radii of the queries just made (RadiusHints) instead of the search limit.
-// The same photons as the per-pixel pass (PhotonGatherPass, the GPU's one pixel per thread),
-// found with less of the tree walked. The tiles are fixed, so the image does not depend on the
-// thread count.
+// consecutive work items of the tiled order) in turn. Each search of a first diffuse vertex
+// starts from the radii of the queries just made (RadiusHints) instead of the search limit, and
+// reads back the surface filter's decisions for photons its neighbours on the same face have
+// already judged (FilterMemo). The same photons as the per-pixel pass (PhotonGatherPass, the
+// GPU's one pixel per thread), found with less work. The tiles are fixed, so the image does not
+// depend on the thread count.
 #include <cstdint>
 
 #include <glm/vec3.hpp>
 
+#include "runtime/photons/filter_memo.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/photons/radius_hints.h"
 #include "runtime/render/frame_buffers.h"
@@ -34,13 +36,18 @@ struct PhotonTileGatherPass {
 
         KnnHeap heap;
         RadiusHints global_hints, caustic_hints;
+        // One per thread (zeroed once), remembering within this tile only: a map freed since
+        // could have left its address to another.
+        static thread_local FilterMemo global_memo, caustic_memo;
+        global_memo.forget();
+        caustic_memo.forget();
         auto estimate = [&](const PhotonMapView& map, bool caustic, const DiffuseVertex& v, std::uint32_t index,
                             const RadianceEstimateParams& params, KnnHeap& h) {
             if (index != 0)  // behind a mirror or glass: not among the tile's neighbours
                 return estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h).radiance;
             RadiusHints& hints = caustic ? caustic_hints : global_hints;
-            const RadianceEstimate e =
-                estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h, hints.hint(v.position));
+            const RadianceEstimate e = estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h,
+                                                         hints.hint(v.position), caustic ? &caustic_memo : &global_memo);
             if (e.count == params.k && !params.fixed_radius) hints.remember(v.position, e.radius);
             return e.radiance;
         };

@@ -24,13 +24,14 @@ std::vector<std::uint32_t> every_nth_photon(std::uint32_t photon_count, std::uin
 }
 
 PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uint32_t slot,
-                                           const RadianceEstimateParams& params, KnnHeap& heap, RadiusHints* hints) {
+                                           const RadianceEstimateParams& params, KnnHeap& heap, RadiusHints* hints,
+                                           FilterMemo* memo) {
     const glm::vec3 position(global.x[slot], global.y[slot], global.z[slot]);
     float n[3];
     decode_octahedral(global.directions[slot].normal, n);
     // With albedo pi the estimate's f_r is 1: the radiance estimate is the irradiance.
     const RadianceEstimate e = estimate_radiance(global, position, glm::vec3(n[0], n[1], n[2]), glm::vec3(kPi), params,
-                                                 heap, hints ? hints->hint(position) : 0.0f);
+                                                 heap, hints ? hints->hint(position) : 0.0f, memo);
     if (hints && e.count == params.k) hints->remember(position, e.radius);
     return PrecomputedIrradiance{{e.radiance.x, e.radiance.y, e.radiance.z}};
 }
@@ -40,16 +41,19 @@ std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& gl
                                                          const RadianceEstimateParams& params) {
     std::vector<PrecomputedIrradiance> out(slots.size());
     // Fixed groups of consecutive slots (neighbours in leaf order), each in turn so that every
-    // search starts from the radii of the ones before it; fixed, so the values do not depend
-    // on how the threads split the work.
+    // search starts from the radii of the ones before it and reads back the filter decisions of
+    // those on the same face; fixed, so the values do not depend on how the threads split the work.
     constexpr std::size_t kGroup = 64;
     const std::size_t groups = (slots.size() + kGroup - 1) / kGroup;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups, 4), [&](const tbb::blocked_range<std::size_t>& r) {
         KnnHeap heap;
+        static thread_local FilterMemo memo;
         for (std::size_t g = r.begin(); g != r.end(); ++g) {
             RadiusHints hints;
+            memo.forget();
             const std::size_t end = (g + 1) * kGroup < slots.size() ? (g + 1) * kGroup : slots.size();
-            for (std::size_t i = g * kGroup; i != end; ++i) out[i] = irradiance_at_photon(global, slots[i], params, heap, &hints);
+            for (std::size_t i = g * kGroup; i != end; ++i)
+                out[i] = irradiance_at_photon(global, slots[i], params, heap, &hints, &memo);
         }
     });
     return out;

@@ -9,7 +9,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "formats/host_device.h"
 #include "runtime/photons/photon_map_view.h"
 
 namespace kdpm {

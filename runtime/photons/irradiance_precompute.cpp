@@ -11,7 +11,7 @@ namespace kdpm {
 
 RadianceEstimateParams irradiance_estimate_params(std::uint32_t k, float typical_radius_32) {
     RadianceEstimateParams params;
-    params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    params.k = clamp_gather_k(k);
     params.max_radius = scaled_gather_radius(typical_radius_32, params.k, kIrradianceRadiusFactor);
     return params;
 }
@@ -30,10 +30,12 @@ PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uin
     float n[3];
     decode_octahedral(global.directions[slot].normal, n);
     // With albedo pi the estimate's f_r is 1: the radiance estimate is the irradiance.
-    const RadianceEstimate e = estimate_radiance(global, position, glm::vec3(n[0], n[1], n[2]), glm::vec3(kPi), params,
-                                                 heap, hints ? hints->hint(position) : 0.0f, memo);
-    if (hints && e.count == params.k) hints->remember(position, e.radius);
-    return PrecomputedIrradiance{{e.radiance.x, e.radiance.y, e.radiance.z}};
+    const glm::vec3 normal(n[0], n[1], n[2]);
+    const glm::vec3 e =
+        (hints ? estimate_radiance_near(global, position, normal, glm::vec3(kPi), params, heap, *hints, memo)
+               : estimate_radiance(global, position, normal, glm::vec3(kPi), params, heap, 0.0f, memo))
+            .radiance;
+    return PrecomputedIrradiance{{e.x, e.y, e.z}};
 }
 
 std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& global,

@@ -9,7 +9,6 @@
 #include "formats/photon_layout.h"
 #include "runtime/photons/photon_map_view.h"
 #include "runtime/photons/radiance_estimate.h"
-#include "runtime/photons/radius_hints.h"
 
 namespace kdpm {
 

@@ -19,6 +19,11 @@ namespace kdpm {
 
 inline constexpr std::uint32_t kMaxGatherK = 256;
 
+// k as every search and estimate uses it: 1..kMaxGatherK.
+KDPM_HD KDPM_INLINE std::uint32_t clamp_gather_k(std::uint32_t k) {
+    return k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+}
+
 struct EuclideanMetric {
     KDPM_HD float operator()(float dx, float dy, float dz) const { return dx * dx + dy * dy + dz * dz; }
 };
@@ -94,7 +99,7 @@ template <class Metric, class Accept>
 KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uint32_t k, float max_radius,
                                  const Metric& metric, const Accept& accept, KnnHeap& heap) {
     if (map.node_count == 0) return 0;
-    k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    k = clamp_gather_k(k);
     float max_d2 = max_radius > 0.0f ? max_radius * max_radius : 3.402823466e38f;
     std::uint32_t found = 0;
     // Copies the optimiser may keep in registers: stores into the heap could alias the originals.

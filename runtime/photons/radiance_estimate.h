@@ -16,6 +16,7 @@
 #include "formats/photon_layout.h"
 #include "runtime/photons/filter_memo.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/photons/radius_hints.h"
 #include "runtime/photons/radius_search.h"
 #include "runtime/shading/constants.h"
 #include "runtime/shading/diffuse.h"
@@ -185,11 +186,13 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     RadianceEstimate out;
     const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
     if (params.fixed_radius) return estimate_radiance_in_radius(map, position, albedo, params, filter);
-    const std::uint32_t k = params.k < 1 ? 1 : (params.k > kMaxGatherK ? kMaxGatherK : params.k);
+    const std::uint32_t k = clamp_gather_k(params.k);
+#if !defined(__CUDA_ARCH__)
+    if (memo) memo->use_for(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
+#endif
     auto search = [&](float limit) {
 #if !defined(__CUDA_ARCH__)
         if (memo) {
-            memo->use_for(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
             const MemoizedFilter<SurfacePhotonFilter> memoized{&filter, memo};
             return params.flatten > 0.0f
                        ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, memoized, heap)
@@ -220,6 +223,17 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);
     out.radius = r;
     return out;
+}
+
+// estimate_radiance started from the bound the hints give at `position` (RadiusHints), which
+// then remember this estimate's radius when it found all k photons.
+KDPM_HD inline RadianceEstimate estimate_radiance_near(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
+                                                       glm::vec3 albedo, const RadianceEstimateParams& params,
+                                                       KnnHeap& heap, RadiusHints& hints, FilterMemo* memo = nullptr) {
+    const RadianceEstimate e =
+        estimate_radiance(map, position, normal, albedo, params, heap, hints.hint(position), memo);
+    if (!params.fixed_radius && e.count == clamp_gather_k(params.k)) hints.remember(position, e.radius);
+    return e;
 }
 
 }  // namespace kdpm

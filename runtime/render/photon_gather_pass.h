@@ -76,7 +76,7 @@ inline PhotonGatherPass make_gather_pass(const PhotonMaps& maps, bool direct_lig
     PhotonGatherPass pass;
     pass.maps = maps;
     const std::uint32_t k = settings.k;
-    pass.global_params.k = k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
+    pass.global_params.k = clamp_gather_k(k);
     pass.global_params.cone_filter = settings.cone_filter;
     pass.global_params.flatten = settings.disc_flatten > 0.0f ? settings.disc_flatten : 0.0f;
     pass.global_params.fixed_radius = settings.fixed_radius;

@@ -46,10 +46,8 @@ struct PhotonTileGatherPass {
             if (index != 0)  // behind a mirror or glass: not among the tile's neighbours
                 return estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h).radiance;
             RadiusHints& hints = caustic ? caustic_hints : global_hints;
-            const RadianceEstimate e = estimate_radiance(map, v.position, v.shading_normal, v.albedo, params, h,
-                                                         hints.hint(v.position), caustic ? &caustic_memo : &global_memo);
-            if (e.count == params.k && !params.fixed_radius) hints.remember(v.position, e.radius);
-            return e.radiance;
+            FilterMemo* memo = caustic ? &caustic_memo : &global_memo;
+            return estimate_radiance_near(map, v.position, v.shading_normal, v.albedo, params, h, hints, memo).radiance;
         };
         for (std::uint64_t t = begin; t < end; ++t)
             pass.gather_pixel(tiled_pixel(t, frame.width, frame.height), heap, estimate);

@@ -1,7 +1,7 @@
 #pragma once
 // The k-nearest photon search (k <= kMaxGatherK): a stack-based kd-tree walk that visits the
 // near child first, pushes the far child with its squared split-plane distance, and keeps the
-// k best photons in a fixed-size max-heap whose top shrinks the search radius.
+// k best photons (KnnBest) whose farthest shrinks the search radius.
 //
 // Metric: squared distance of an offset (dx, dy, dz) = photon - query; it must be at least the
 // Euclidean squared distance (so the split-plane test stays a valid lower bound): Euclidean,
@@ -13,16 +13,10 @@
 #include <glm/glm.hpp>
 
 #include "formats/host_device.h"
+#include "runtime/photons/knn_best.h"
 #include "runtime/photons/photon_map_view.h"
 
 namespace kdpm {
-
-inline constexpr std::uint32_t kMaxGatherK = 256;
-
-// k as every search and estimate uses it: 1..kMaxGatherK.
-KDPM_HD KDPM_INLINE std::uint32_t clamp_gather_k(std::uint32_t k) {
-    return k < 1 ? 1 : (k > kMaxGatherK ? kMaxGatherK : k);
-}
 
 struct EuclideanMetric {
     KDPM_HD float operator()(float dx, float dy, float dz) const { return dx * dx + dy * dy + dz * dz; }
@@ -43,40 +37,7 @@ struct AcceptAll {
     KDPM_HD bool operator()(std::uint32_t) const { return true; }
 };
 
-// Scratch for one search: a max-heap on d2 (d2[0] is the farthest of those kept).
-struct KnnHeap {
-    float d2[kMaxGatherK];
-    std::uint32_t index[kMaxGatherK];
-};
-
 namespace knn_detail {
-
-KDPM_HD KDPM_INLINE void sift_down(float* d2, std::uint32_t* index, std::uint32_t n, float key, std::uint32_t item) {
-    std::uint32_t i = 0;
-    for (;;) {
-        std::uint32_t c = 2 * i + 1;
-        if (c >= n) break;
-        if (c + 1 < n && d2[c + 1] > d2[c]) ++c;
-        if (!(d2[c] > key)) break;
-        d2[i] = d2[c];
-        index[i] = index[c];
-        i = c;
-    }
-    d2[i] = key;
-    index[i] = item;
-}
-
-KDPM_HD KDPM_INLINE void sift_up(float* d2, std::uint32_t* index, std::uint32_t i, float key, std::uint32_t item) {
-    while (i > 0) {
-        std::uint32_t parent = (i - 1) / 2;
-        if (!(d2[parent] < key)) break;
-        d2[i] = d2[parent];
-        index[i] = index[parent];
-        i = parent;
-    }
-    d2[i] = key;
-    index[i] = item;
-}
 
 // Squared metric distances of m photons (coordinate arrays x, y, z) from q, into out[0..m).
 inline constexpr std::uint32_t kLeafChunk = 16;
@@ -86,11 +47,24 @@ KDPM_HD KDPM_INLINE void leaf_distances(const float* x, const float* y, const fl
     for (std::uint32_t j = 0; j < m; ++j) out[j] = metric(x[j] - q.x, y[j] - q.y, z[j] - q.z);
 }
 
+// Bit j set for each j < m with d[j] < limit (d holds kLeafChunk values).
+KDPM_HD KDPM_INLINE std::uint32_t below_mask(const float* d, std::uint32_t m, float limit) {
+    std::uint32_t mask = 0;
+#if KDPM_KNN_SSE2
+    const __m128 l = _mm_set1_ps(limit);
+    for (std::uint32_t i = 0; i < kLeafChunk; i += 4)
+        mask |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(d + i), l))) << i;
+#else
+    for (std::uint32_t i = 0; i < kLeafChunk; ++i) mask |= static_cast<std::uint32_t>(d[i] < limit) << i;
+#endif
+    return m >= 32 ? mask : mask & ((1u << m) - 1u);
+}
+
 }  // namespace knn_detail
 
 // Finds up to k photons (k clamped to 1..kMaxGatherK) with metric distance^2 < max_radius^2
 // (no limit when max_radius <= 0). Returns how many; they are in heap.d2/heap.index[0..count),
-// a max-heap (heap.d2[0] the largest). Writes nothing else; no allocation.
+// heap.d2[0] the largest, the rest unordered. Writes nothing but heap; no allocation.
 //
 // A far child is pushed with the squared distance from q to its cell, from the cell's per-axis
 // offsets kept incrementally (Arya & Mount: only the split axis changes from the parent's).
@@ -101,12 +75,10 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
     if (map.node_count == 0) return 0;
     k = clamp_gather_k(k);
     float max_d2 = max_radius > 0.0f ? max_radius * max_radius : 3.402823466e38f;
-    std::uint32_t found = 0;
-    // Copies the optimiser may keep in registers: stores into the heap could alias the originals.
+    knn_detail::KnnBest best(heap, k);
+    // Copies the optimiser may keep in registers: stores into the result could alias the originals.
     const Metric dist = metric;
     const Accept acc = accept;
-    float* hd2 = heap.d2;
-    std::uint32_t* hidx = heap.index;
 
     struct Entry {
         std::uint32_t node;
@@ -115,8 +87,8 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
     };
     // At most one entry per inner node on the current path: the .kdp validator refuses trees
     // deeper than kMaxPhotonTreeDepth, so the guard below never drops a push for a loaded file;
-    // debug builds assert it.
-    Entry stack[kMaxPhotonTreeDepth + 1];
+    // debug builds assert it. One spare entry takes the write of a push that is not kept.
+    Entry stack[kMaxPhotonTreeDepth + 2];
     std::uint32_t top = 0;
     std::uint32_t node = 0;
     float off[3] = {0.0f, 0.0f, 0.0f};
@@ -127,6 +99,8 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             const int axis = n.axis();
             const float d = qc[axis] - n.split();
             const std::uint32_t above = n.above_child();
+            // Chosen by masks, not branches: which side the query is on is a coin toss from
+            // node to node, so a predicted branch missed about a third of the time.
             const std::uint32_t near_child = d < 0.0f ? node + 1 : above;
             const std::uint32_t far_child = d < 0.0f ? above : node + 1;
             // Summed afresh in the photon distance's order (no cancellation), so rounding never
@@ -135,14 +109,14 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             far_off[axis] = d;
             const float far_d2 = far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
             assert(top <= kMaxPhotonTreeDepth && "photon tree deeper than kMaxPhotonTreeDepth");
-            if (far_d2 < max_d2 && top <= kMaxPhotonTreeDepth) {
-                Entry& e = stack[top++];
-                e.node = far_child;
-                e.d2 = far_d2;
-                e.off[0] = far_off[0];
-                e.off[1] = far_off[1];
-                e.off[2] = far_off[2];
-            }
+            // Written always, kept (top advanced) only when the far cell is within the radius.
+            Entry& e = stack[top];
+            e.node = far_child;
+            e.d2 = far_d2;
+            e.off[0] = far_off[0];
+            e.off[1] = far_off[1];
+            e.off[2] = far_off[2];
+            top += static_cast<std::uint32_t>(far_d2 < max_d2) & static_cast<std::uint32_t>(top <= kMaxPhotonTreeDepth);
             node = near_child;
             n = map.nodes[node];
         }
@@ -150,13 +124,11 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
         // Photons in leaf order, each kept when closer than the current radius and accepted.
         auto consider = [&](std::uint32_t p, float d2) {
             if (d2 < max_d2 && acc(p)) {
-                if (found < k) {
-                    knn_detail::sift_up(hd2, hidx, found, d2, p);
-                    ++found;
-                    if (found == k) max_d2 = hd2[0];
-                } else {
-                    knn_detail::sift_down(hd2, hidx, k, d2, p);
-                    max_d2 = hd2[0];
+                if (best.full()) {
+                    best.replace_farthest(d2, p);
+                    max_d2 = best.farthest();
+                } else if (best.append(d2, p)) {
+                    max_d2 = best.farthest();
                 }
             }
         };
@@ -176,12 +148,17 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, knn_detail::kLeafChunk, q, dist, d2);
             else
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
-            for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
+            // Only those inside the radius as the chunk starts are looked at, in leaf order; the
+            // radius may shrink on the way, which consider checks again.
+            for (std::uint32_t inside = knn_detail::below_mask(d2, m, max_d2); inside != 0; inside &= inside - 1) {
+                const std::uint32_t j = static_cast<std::uint32_t>(__builtin_ctz(inside));
+                consider(base + j, d2[j]);
+            }
         }
 #endif
         // Next subtree whose cell is still closer than the current radius.
         for (;;) {
-            if (top == 0) return found;
+            if (top == 0) return best.finish();
             --top;
             if (stack[top].d2 < max_d2) break;
         }

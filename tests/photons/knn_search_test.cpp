@@ -40,8 +40,9 @@ void check_knn_against_brute_force(PhotonTreeBuilder builder, std::uint32_t leaf
             if (qi % 3 == 0) q = {tree.x[qi * 31], tree.y[qi * 31], tree.z[qi * 31]};  // on a photon
             std::uint32_t n = knn_search(view, q, k, max_radius, heap);
             std::vector<float> got(heap.d2, heap.d2 + n);
-            std::sort(got.begin(), got.end());
             INFO("k " << k << " query " << qi);
+            if (n > 0) REQUIRE(heap.d2[0] == *std::max_element(got.begin(), got.end()));  // the radius
+            std::sort(got.begin(), got.end());
             REQUIRE(got == brute_force(tree, q, k, max_radius));
             for (std::uint32_t i = 0; i < n; ++i) {  // each index really is at its distance
                 std::uint32_t p = heap.index[i];

@@ -47,19 +47,6 @@ KDPM_HD KDPM_INLINE void leaf_distances(const float* x, const float* y, const fl
     for (std::uint32_t j = 0; j < m; ++j) out[j] = metric(x[j] - q.x, y[j] - q.y, z[j] - q.z);
 }
 
-// Bit j set for each j < m with d[j] < limit (d holds kLeafChunk values).
-KDPM_HD KDPM_INLINE std::uint32_t below_mask(const float* d, std::uint32_t m, float limit) {
-    std::uint32_t mask = 0;
-#if KDPM_KNN_SSE2
-    const __m128 l = _mm_set1_ps(limit);
-    for (std::uint32_t i = 0; i < kLeafChunk; i += 4)
-        mask |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(d + i), l))) << i;
-#else
-    for (std::uint32_t i = 0; i < kLeafChunk; ++i) mask |= static_cast<std::uint32_t>(d[i] < limit) << i;
-#endif
-    return m >= 32 ? mask : mask & ((1u << m) - 1u);
-}
-
 }  // namespace knn_detail
 
 // Finds up to k photons (k clamped to 1..kMaxGatherK) with metric distance^2 < max_radius^2
@@ -148,12 +135,7 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, knn_detail::kLeafChunk, q, dist, d2);
             else
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
-            // Only those inside the radius as the chunk starts are looked at, in leaf order; the
-            // radius may shrink on the way, which consider checks again.
-            for (std::uint32_t inside = knn_detail::below_mask(d2, m, max_d2); inside != 0; inside &= inside - 1) {
-                const std::uint32_t j = static_cast<std::uint32_t>(__builtin_ctz(inside));
-                consider(base + j, d2[j]);
-            }
+            for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
         }
 #endif
         // Next subtree whose cell is still closer than the current radius.

@@ -1,6 +1,6 @@
 // The k best kept by a search (KnnBest): after any sequence of offers, the same distances as the
 // k smallest of everything offered, the farthest in slot 0 and each index still beside its
-// distance; and the leaf scan's inside-the-radius mask.
+// distance.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -63,22 +63,6 @@ TEST_CASE("KnnBest keeps the k smallest distances offered, the farthest in slot 
             INFO("k " << k << " offers " << n);
             check_offers(k, n, rng, false);
             check_offers(k, n, rng, true);
-        }
-    }
-}
-
-TEST_CASE("the leaf scan's mask marks exactly the distances below the radius", "[photons][knn]") {
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<float> u(0.0f, 4.0f);
-    for (std::uint32_t m = 0; m <= knn_detail::kLeafChunk; ++m) {
-        float d[knn_detail::kLeafChunk];
-        for (float& v : d) v = static_cast<float>(static_cast<int>(u(rng)));  // ties with the limit
-        for (float limit : {0.0f, 1.0f, 2.5f, 3.0f, 100.0f}) {
-            const std::uint32_t mask = knn_detail::below_mask(d, m, limit);
-            for (std::uint32_t j = 0; j < knn_detail::kLeafChunk; ++j) {
-                INFO("m " << m << " limit " << limit << " j " << j);
-                CHECK(((mask >> j) & 1u) == static_cast<std::uint32_t>(j < m && d[j] < limit));
-            }
         }
     }
 }

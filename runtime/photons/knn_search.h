@@ -86,8 +86,6 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             const int axis = n.axis();
             const float d = qc[axis] - n.split();
             const std::uint32_t above = n.above_child();
-            // Chosen by masks, not branches: which side the query is on is a coin toss from
-            // node to node, so a predicted branch missed about a third of the time.
             const std::uint32_t near_child = d < 0.0f ? node + 1 : above;
             const std::uint32_t far_child = d < 0.0f ? above : node + 1;
             // Summed afresh in the photon distance's order (no cancellation), so rounding never
@@ -96,7 +94,8 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             far_off[axis] = d;
             const float far_d2 = far_off[0] * far_off[0] + far_off[1] * far_off[1] + far_off[2] * far_off[2];
             assert(top <= kMaxPhotonTreeDepth && "photon tree deeper than kMaxPhotonTreeDepth");
-            // Written always, kept (top advanced) only when the far cell is within the radius.
+            // Written always, kept (top advanced) only when the far cell is within the radius:
+            // whether it is cannot be predicted well, and a mispredicted branch costs more.
             Entry& e = stack[top];
             e.node = far_child;
             e.d2 = far_d2;

@@ -98,25 +98,40 @@ struct SurfacePhotonFilter {
         return nn[0] * normal.x + nn[1] * normal.y + nn[2] * normal.z >= min_normal_cos;
     }
 
-    KDPM_HD bool operator()(std::uint32_t p) const {
-        if (check_flags) {
-            const std::uint32_t f = flags[p];
-            if ((f & exclude_flags) != 0 || photon_bounce(f) < min_bounce) return false;
-        }
-        if (!quick) return exact(p);
-        float r[3];
-        unfolded(directions[p].direction, r);
+    // False when the photon's flags or bounce rule it out.
+    KDPM_HD bool passes_flags(std::uint32_t p) const {
+        if (!check_flags) return true;
+        const std::uint32_t f = flags[p];
+        return (f & exclude_flags) == 0 && photon_bounce(f) >= min_bounce;
+    }
+
+    // The quick decision from the photon's unfolded direction r and, when given, its unfolded
+    // normal (else decoded here if needed); only for a filter that is quick.
+    KDPM_HD bool decide_unfolded(std::uint32_t p, const float r[3], const float* unfolded_normal) const {
         const float s = r[0] * normal.x + r[1] * normal.y + r[2] * normal.z;
         if (s >= 1e-4f) return false;  // from behind
         if (s > -1e-4f) return exact(p);
         if (min_normal_cos <= -1.0f) return true;
-        unfolded(directions[p].normal, r);
-        const float c = r[0] * normal.x + r[1] * normal.y + r[2] * normal.z;
+        float decoded[3];
+        const float* m = unfolded_normal;
+        if (m == nullptr) {
+            unfolded(directions[p].normal, decoded);
+            m = decoded;
+        }
+        const float c = m[0] * normal.x + m[1] * normal.y + m[2] * normal.z;
         if (c <= 0.0f) return false;  // min_normal_cos >= 0.05 here
-        const float l2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+        const float l2 = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
         if (c * c > cos2_above * l2) return true;
         if (c * c < cos2_below * l2) return false;
         return exact(p);
+    }
+
+    KDPM_HD bool operator()(std::uint32_t p) const {
+        if (!passes_flags(p)) return false;
+        if (!quick) return exact(p);
+        float r[3];
+        unfolded(directions[p].direction, r);
+        return decide_unfolded(p, r, nullptr);
     }
 };
 

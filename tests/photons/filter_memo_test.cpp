@@ -1,5 +1,6 @@
-// FilterMemo: decisions read back from the memo are the surface filter's, whatever the sequence
-// of normals, settings, maps and photons (slots shared by several photons included).
+// FilterMemo: decisions read back from the memo, or taken from its remembered vectors, are the
+// surface filter's, whatever the sequence of normals, settings, maps and photons (slots shared
+// by several photons included).
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -19,7 +20,7 @@ TEST_CASE("Decisions through a FilterMemo are the surface filter's", "[photons][
     std::mt19937 rng(47);
     std::uniform_int_distribution<std::uint32_t> pick(0, 8999);
     static FilterMemo memo;
-    std::uint64_t remembered = 0, asked = 0;
+    std::uint64_t remembered = 0, vectors_reused = 0, asked = 0;
     const float cosines[] = {0.7f, -1.0f, 0.3f};
     int map_i = 0, normal_i = 0, cos_i = 0;
     std::uint32_t min_bounce = 0, exclude = 0;
@@ -46,11 +47,14 @@ TEST_CASE("Decisions through a FilterMemo are the surface filter's", "[photons][
             std::uint32_t p = i < 200 ? (pick(rng) % 400) + 100 * (query % 8) : pick(rng);
             if (i % 7 == 0 && p + FilterMemo::kSlots < map.photon_count) p += FilterMemo::kSlots;
             const std::uint32_t slot = p & (FilterMemo::kSlots - 1);
-            remembered += memo.tag[slot] == ((memo.generation << 32) | p);
+            const bool decided = memo.tag[slot] == ((memo.generation << 32) | p);
+            remembered += decided;
+            vectors_reused += !decided && memo.vector_tag[slot] == ((memo.vector_generation << 32) | p);
             ++asked;
             INFO("query " << query << " photon " << p);
             REQUIRE(memo.decide(p, filter) == filter(p));
         }
     }
-    CHECK(remembered > asked / 4);  // the memo did answer from memory
+    CHECK(remembered > asked / 4);        // the memo did answer from memory
+    CHECK(vectors_reused > asked / 50);   // and decided anew from remembered vectors
 }

@@ -1,11 +1,11 @@
 #pragma once
 // The k best photons a k-nearest search has kept so far: unordered slots plus the largest
 // distance of each block of 8 slots. Replacing the farthest rewrites one slot and finds the new
-// farthest from one block's 8 distances and the k/8 block maxima, with no data-dependent
-// branches; a binary max-heap's sift-down took about 100 instructions and mispredicted branches
-// per replacement, a third of a k = 32 search. On x86 the maxima are SSE2 lanes; elsewhere (CUDA,
-// other CPUs) the same steps are scalar loops. The slots chosen, and so the order a caller sums
-// them in, are the same on every backend.
+// farthest from one block's 8 distances and the k/8 block maxima, with one data-dependent
+// branch (which group of four holds it); a binary max-heap's sift-down took about 100
+// instructions and mispredicted branches per replacement, a third of a k = 32 search. On x86
+// the maxima are SSE2 lanes; elsewhere (CUDA, other CPUs) the same steps are scalar loops. The
+// slots chosen, and so the order a caller sums them in, are the same on every backend.
 #include <cstdint>
 
 #include "formats/host_device.h"

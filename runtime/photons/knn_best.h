@@ -94,7 +94,6 @@ public:
         : d2_(h.d2), index_(h.index), block_max_(h.block_max), k_(k),
           blocks_((k + KnnHeap::kBlock - 1) / KnnHeap::kBlock), block_groups_((blocks_ + 3) & ~3u) {}
 
-    KDPM_HD KDPM_INLINE std::uint32_t count() const { return count_; }
     KDPM_HD KDPM_INLINE bool full() const { return count_ == k_; }
     // The largest distance kept (valid once full()).
     KDPM_HD KDPM_INLINE float farthest() const { return farthest_; }
@@ -120,7 +119,7 @@ public:
         find_farthest();
     }
 
-    // Moves the farthest kept photon to slot 0, as the result promises. Returns count().
+    // Moves the farthest kept photon to slot 0, as the result promises. Returns how many are kept.
     KDPM_HD KDPM_INLINE std::uint32_t finish() {
         if (count_ == 0) return 0;
         std::uint32_t w = 0;

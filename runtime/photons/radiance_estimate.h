@@ -190,7 +190,7 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
 // max_radius, which prunes most of the tree before the first k photons are found; when it holds
 // fewer than k, the search runs again out to max_radius. Either way the k nearest are found (a
 // search limited to r that finds k photons has found the k nearest overall); only their order in
-// the heap may differ, and with it the last bits of the sum, and which of several photons at
+// the result may differ, and with it the last bits of the sum, and which of several photons at
 // exactly the k-th distance is kept.
 //
 // memo (CPU only; may be null): the filter's decisions remembered from earlier searches (FilterMemo).

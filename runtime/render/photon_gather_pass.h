@@ -57,7 +57,8 @@ struct PhotonGatherPass {
             const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
             const DiffuseVertex& v = frame.vertices[slot];
             glm::vec3 l = estimate(maps.global, false, v, i, global_params, heap);
-            if (use_caustic_map && maps.caustic.node_count > 0) l += estimate(maps.caustic, true, v, i, caustic_params, heap);
+            if (use_caustic_map && maps.caustic.node_count > 0)
+                l += estimate(maps.caustic, true, v, i, caustic_params, heap);
             frame.gathered[slot] = l;
         }
     }

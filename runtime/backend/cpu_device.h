@@ -15,6 +15,8 @@ struct CpuDevice {
     static constexpr bool arrays_on_host = true;
     // The photon gather runs a tile of pixels per work item (PhotonTileGatherPass).
     static constexpr bool gathers_by_tile = true;
+    // Camera rays are traced in packets first (CameraPacketPass).
+    static constexpr bool traces_packets = true;
     template <class T>
     struct Array {
         std::unique_ptr<T[]> items;

@@ -44,6 +44,9 @@ struct TracePass {
     std::uint32_t sample = 0;
     std::uint32_t max_depth = 8;
     float epsilon = 1e-4f;  // ray offset from surfaces, scaled to the scene
+    // The camera rays' closest hits, per pixel, when a packet pass has traced them already
+    // (CameraPacketPass, CPU); null: the camera ray is traced here like the others.
+    const Hit* camera_hits = nullptr;
 
     struct Pending {
         glm::vec3 origin, direction, throughput;
@@ -68,7 +71,7 @@ struct TracePass {
         while (sp > 0) {
             const Pending r = stack[--sp];
             const Ray ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()};
-            const Hit hit = closest_hit(geometry, ray);
+            const Hit hit = first && camera_hits ? camera_hits[pixel] : closest_hit(geometry, ray);
             if (first) {
                 write_aovs(pixel, ray, hit);
                 first = false;

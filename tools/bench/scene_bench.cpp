@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <thread>
 
@@ -12,6 +13,7 @@
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
+#include "runtime/geometry/kd_packet_traversal.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_file.h"
@@ -89,6 +91,31 @@ double trace_with_kdpm(const GeometryView& g, PrimaryRays& p) {
     });
 }
 
+// The same rays as 16-ray packets of 4x4 pixels (the rays are in row-major order), as the
+// renderer's CPU backend traces its camera rays.
+double trace_packets_with_kdpm(const GeometryView& g, const PrimaryRays& p, std::uint32_t width, std::uint32_t height,
+                               std::vector<Hit>& hits) {
+    hits.resize(p.rays.size());
+    const std::uint32_t blocks_x = (width + 3) / 4, blocks_y = (height + 3) / 4;
+    return median_ms(1, [&] {
+        cpu_parallel_for(static_cast<std::uint64_t>(blocks_x) * blocks_y, [&](std::uint64_t b) {
+            const std::uint32_t x0 = static_cast<std::uint32_t>(b % blocks_x) * 4, y0 = static_cast<std::uint32_t>(b / blocks_x) * 4;
+            RayPacket packet;
+            std::size_t index[kPacketRays];
+            for (std::uint32_t y = y0; y < y0 + 4 && y < height; ++y)
+                for (std::uint32_t x = x0; x < x0 + 4 && x < width; ++x) {
+                    const PeerRay& r = p.rays[static_cast<std::size_t>(y) * width + x];
+                    index[packet.count] = static_cast<std::size_t>(y) * width + x;
+                    packet.set(packet.count++, Ray{glm::vec3(r.origin[0], r.origin[1], r.origin[2]), 0.0f,
+                                                   glm::vec3(r.direction[0], r.direction[1], r.direction[2]), INFINITY});
+                }
+            Hit out[kPacketRays];
+            closest_hits(g, packet, out);
+            for (std::uint32_t i = 0; i < packet.count; ++i) hits[index[i]] = out[i];
+        }, 16);
+    });
+}
+
 // The two qualities' trees on the same primary rays, passes interleaved so that both see the
 // same machine; hits must agree (exact trees differ at most in ties).
 void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, const GeometryFile& high,
@@ -144,6 +171,15 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
     for (int f = 0; f < c.frames + 1; ++f) ours.push_back(trace_with_kdpm(g, p));
     ours.erase(ours.begin());  // warm-up
     peers.kdpm_rays_ms = median_of(ours);
+    std::vector<Hit> packet_hits;
+    std::vector<double> packets;
+    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, p, c.width, c.height, packet_hits));
+    packets.erase(packets.begin());  // warm-up
+    peers.kdpm_packet_rays_ms = median_of(packets);
+    std::size_t same_as_single = 0;
+    for (std::size_t i = 0; i < packet_hits.size(); ++i)
+        same_as_single += std::memcmp(&packet_hits[i], &p.hits[i], sizeof(Hit)) == 0;
+    peers.packet_same_as_single = packet_hits.empty() ? 1.0 : static_cast<double>(same_as_single) / packet_hits.size();
     for (std::size_t i = 0; i < p.rays.size(); ++i)
         if (p.hits[i].found()) {
             const PeerRay& r = p.rays[i];

@@ -47,6 +47,8 @@ struct PeerFigures {
     double embree_medium_build_ms = 0, kdpm_fast_build_ms = 0;  // Embree MEDIUM; kdpm --quality fast
     double nanoflann_build_ms = 0, kdpm_photon_trees_ms = 0;    // global + caustic trees, same photons
     double embree_rays_ms = 0, kdpm_rays_ms = 0;          // same primary rays, all threads
+    double kdpm_packet_rays_ms = 0;                       // the same rays as kdpm's 4x4-pixel packets
+    double packet_same_as_single = 0;                     // fraction of packet hits equal to the single-ray hits, bit for bit
     double ray_agreement = 0;                             // fraction of rays with the same hit triangle
     double embree16_rays_ms = 0;                          // rtcIntersect16, 4x4-pixel packets, same rays
     double packet_agreement = 0;                          // the same for the packets' hits

@@ -37,25 +37,29 @@ SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std
     const double cell_volume = grown_volume(cell.lo, cell.hi, r);
     if (!(cell_volume > 0.0) || !std::isfinite(cell_volume)) return best_choice;
 
+    // grown_volume of the children without building them: per axis the other two factors are
+    // fixed, and the product keeps grown_volume's order (axis 0, 1, 2), so the costs are its bits.
+    double grown[3];
+    for (int a = 0; a < 3; ++a) grown[a] = (static_cast<double>(cell.hi[a]) - cell.lo[a]) + 2.0 * r;
     double best = std::numeric_limits<double>::infinity();
-    auto consider = [&](int a, float s, std::uint32_t below, std::uint32_t above) {
-        Cell lo_cell = cell, hi_cell = cell;
-        lo_cell.hi[a] = s;
-        hi_cell.lo[a] = s;
-        double cost = costs.traverse + (grown_volume(lo_cell.lo, lo_cell.hi, r) * below +
-                                        grown_volume(hi_cell.lo, hi_cell.hi, r) * above) /
-                                           cell_volume * costs.photon;
-        if (cost < best) {
-            best = cost;
-            best_choice = SplitChoice{false, a, s};
-        }
-    };
-
     for (int a = 0; a < 3; ++a) {
+        auto volume_with = [&](double factor) {
+            return a == 0 ? (factor * grown[1]) * grown[2] : a == 1 ? (grown[0] * factor) * grown[2] : (grown[0] * grown[1]) * factor;
+        };
+        auto consider = [&](float s, std::uint32_t below, std::uint32_t above) {
+            const double below_volume = volume_with((static_cast<double>(s) - cell.lo[a]) + 2.0 * r);
+            const double above_volume = volume_with((static_cast<double>(cell.hi[a]) - s) + 2.0 * r);
+            const double cost =
+                costs.traverse + (below_volume * below + above_volume * above) / cell_volume * costs.photon;
+            if (cost < best) {
+                best = cost;
+                best_choice = SplitChoice{false, a, s};
+            }
+        };
         // Empty space between the cell wall and the photons: a query landing there costs nothing.
-        if (cell.lo[a] < b.lo[a]) consider(a, b.lo[a], 0, n);
+        if (cell.lo[a] < b.lo[a]) consider(b.lo[a], 0, n);
         float past_top = std::nextafter(b.hi[a], std::numeric_limits<float>::infinity());
-        if (past_top < cell.hi[a]) consider(a, past_top, n, 0);
+        if (past_top < cell.hi[a]) consider(past_top, n, 0);
 
         const float lo = b.lo[a], extent = b.hi[a] - b.lo[a];
         if (!(extent > 0.0f)) continue;
@@ -63,7 +67,7 @@ SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std
         for (int i = 1; i < kBins; ++i) {
             below += counts[a][i - 1];
             float s = lo + extent * (static_cast<float>(i) / kBins);
-            if (s > lo && s <= b.hi[a]) consider(a, s, below, n - below);
+            if (s > lo && s <= b.hi[a]) consider(s, below, n - below);
         }
     }
     const double leaf_cost = static_cast<double>(n) * costs.photon;

@@ -21,11 +21,11 @@ void for_each_chunk(std::uint32_t n, Body&& body) {
 
 }  // namespace
 
-Cell parallel_photon_bounds(const Positions& p, const std::uint32_t* idx, std::uint32_t n) {
-    if (n == 0) return photon_bounds(p, idx, n);
+Cell parallel_photon_bounds(const PhotonRecord* r, std::uint32_t n) {
+    if (n == 0) return photon_bounds(r, n);
     std::vector<Cell> part((n + kChunk - 1) / kChunk);
     for_each_chunk(n, [&](std::uint32_t c, std::uint32_t begin, std::uint32_t end) {
-        part[c] = photon_bounds(p, idx + begin, end - begin);
+        part[c] = photon_bounds(r + begin, end - begin);
     });
     // std::min/max keep the earlier of equal values (+0 and -0), as the sequential scan does.
     Cell b = part[0];
@@ -37,16 +37,16 @@ Cell parallel_photon_bounds(const Positions& p, const std::uint32_t* idx, std::u
     return b;
 }
 
-SplitChoice parallel_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
-                               float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs) {
+SplitChoice parallel_vvh_split(const PhotonRecord* r, std::uint32_t n, const Cell& cell, float query_radius,
+                               std::uint32_t max_leaf_size, const VvhCosts& costs) {
     if (n <= 1) return SplitChoice{};
-    const Cell b = parallel_photon_bounds(p, idx, n);
+    const Cell b = parallel_photon_bounds(r, n);
     struct Bins {
         VvhBins counts = {};
     };
     std::vector<Bins> part((n + kChunk - 1) / kChunk);
     for_each_chunk(n, [&](std::uint32_t c, std::uint32_t begin, std::uint32_t end) {
-        count_vvh_bins(p, idx + begin, end - begin, b, part[c].counts);
+        count_vvh_bins(r + begin, end - begin, b, part[c].counts);
     });
     VvhBins counts = {};
     for (const Bins& bins : part)
@@ -55,29 +55,27 @@ SplitChoice parallel_vvh_split(const Positions& p, const std::uint32_t* idx, std
     return choose_vvh_split_from_bins(b, counts, n, cell, query_radius, max_leaf_size, costs);
 }
 
-std::uint32_t parallel_stable_partition(const Positions& p, std::uint32_t* idx, std::uint32_t n, int axis,
-                                        float position) {
-    const float* c = p.axis[axis];
+std::uint32_t parallel_stable_partition(PhotonRecord* r, std::uint32_t n, int axis, float position) {
     const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
     std::vector<std::uint32_t> below(chunks + 1, 0), above(chunks + 1, 0);
     for_each_chunk(n, [&](std::uint32_t k, std::uint32_t begin, std::uint32_t end) {
         std::uint32_t m = 0;
-        for (std::uint32_t i = begin; i < end; ++i) m += c[idx[i]] < position;
+        for (std::uint32_t i = begin; i < end; ++i) m += r[i].position[axis] < position;
         below[k + 1] = m;
         above[k + 1] = (end - begin) - m;
     });
     for (std::uint32_t k = 0; k < chunks; ++k) below[k + 1] += below[k], above[k + 1] += above[k];
     const std::uint32_t total_below = below[chunks];
-    std::vector<std::uint32_t> out(n);
+    std::vector<PhotonRecord> out(n);
     for_each_chunk(n, [&](std::uint32_t k, std::uint32_t begin, std::uint32_t end) {
         std::uint32_t lo = below[k], hi = total_below + above[k];
         for (std::uint32_t i = begin; i < end; ++i) {
-            if (c[idx[i]] < position) out[lo++] = idx[i];
-            else out[hi++] = idx[i];
+            if (r[i].position[axis] < position) out[lo++] = r[i];
+            else out[hi++] = r[i];
         }
     });
     for_each_chunk(n, [&](std::uint32_t, std::uint32_t begin, std::uint32_t end) {
-        std::copy(out.begin() + begin, out.begin() + end, idx + begin);
+        std::copy(out.begin() + begin, out.begin() + end, r + begin);
     });
     return total_below;
 }

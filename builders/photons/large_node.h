@@ -13,14 +13,13 @@ namespace kdpm::photon_build {
 inline constexpr std::uint32_t kLargeNode = 65536;
 
 // photon_bounds.
-Cell parallel_photon_bounds(const Positions& p, const std::uint32_t* idx, std::uint32_t n);
+Cell parallel_photon_bounds(const PhotonRecord* r, std::uint32_t n);
 
 // choose_vvh_split.
-SplitChoice parallel_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
-                               float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});
+SplitChoice parallel_vvh_split(const PhotonRecord* r, std::uint32_t n, const Cell& cell, float query_radius,
+                               std::uint32_t max_leaf_size, const VvhCosts& costs = {});
 
-// std::stable_partition of idx[0..n) by coordinate `axis` < `position`; returns the count below.
-std::uint32_t parallel_stable_partition(const Positions& p, std::uint32_t* idx, std::uint32_t n, int axis,
-                                        float position);
+// std::stable_partition of r[0..n) by coordinate `axis` < `position`; returns the count below.
+std::uint32_t parallel_stable_partition(PhotonRecord* r, std::uint32_t n, int axis, float position);
 
 }  // namespace kdpm::photon_build

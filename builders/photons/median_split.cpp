@@ -5,27 +5,26 @@
 
 namespace kdpm::photon_build {
 
-SplitChoice choose_median_split(const Positions& p, std::uint32_t* idx, std::uint32_t n, std::uint32_t leaf_size) {
+SplitChoice choose_median_split(PhotonRecord* r, std::uint32_t n, std::uint32_t leaf_size) {
     SplitChoice leaf;
     if (n <= leaf_size || n < 2) return leaf;
-    Cell b = photon_bounds(p, idx, n);
+    Cell b = photon_bounds(r, n);
     std::array<int, 3> axes{0, 1, 2};
     std::stable_sort(axes.begin(), axes.end(),
                      [&](int l, int r) { return b.hi[l] - b.lo[l] > b.hi[r] - b.lo[r]; });
     for (int a : axes) {
         if (!(b.hi[a] > b.lo[a])) continue;
-        const float* c = p.axis[a];
         std::uint32_t mid = n / 2;
         // Ties broken by index so the selection is a function of the data alone.
-        std::nth_element(idx, idx + mid, idx + n, [&](std::uint32_t l, std::uint32_t r) {
-            return c[l] < c[r] || (c[l] == c[r] && l < r);
+        std::nth_element(r, r + mid, r + n, [&](const PhotonRecord& x, const PhotonRecord& y) {
+            return x.position[a] < y.position[a] || (x.position[a] == y.position[a] && x.index < y.index);
         });
-        float m = c[idx[mid]];
+        float m = r[mid].position[a];
         if (m <= b.lo[a]) {
             // The lower half is all one value: split just above it instead.
             float next = b.hi[a];
             for (std::uint32_t i = 0; i < n; ++i)
-                if (c[idx[i]] > m) next = std::min(next, c[idx[i]]);
+                if (r[i].position[a] > m) next = std::min(next, r[i].position[a]);
             m = next;
         }
         return SplitChoice{false, a, m};

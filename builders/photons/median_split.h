@@ -5,7 +5,7 @@
 
 namespace kdpm::photon_build {
 
-// May reorder idx[0..n) (a selection). Leaf when n <= leaf_size or all photons coincide.
-SplitChoice choose_median_split(const Positions& p, std::uint32_t* idx, std::uint32_t n, std::uint32_t leaf_size);
+// May reorder r[0..n) (a selection). Leaf when n <= leaf_size or all photons coincide.
+SplitChoice choose_median_split(PhotonRecord* r, std::uint32_t n, std::uint32_t leaf_size);
 
 }  // namespace kdpm::photon_build

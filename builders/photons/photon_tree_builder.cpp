@@ -17,18 +17,17 @@ namespace kdpm {
 namespace {
 
 using photon_build::Cell;
-using photon_build::Positions;
+using photon_build::PhotonRecord;
 using photon_build::SplitChoice;
 
 // Subtrees at least this big build their two children in parallel.
 constexpr std::uint32_t kParallelThreshold = 16384;
 
 struct Builder {
-    Positions pos;
-    std::uint32_t* idx;
+    PhotonRecord* rec;
     PhotonTreeOptions options;
 
-    // Appends the subtree of idx[begin, end) to `out`; inner nodes' above-child indices are
+    // Appends the subtree of rec[begin, end) to `out`; inner nodes' above-child indices are
     // relative to the start of `out`.
     void build(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::uint32_t depth,
                std::vector<KdNode>& out) const {
@@ -37,24 +36,24 @@ struct Builder {
         const bool large = n >= photon_build::kLargeNode;
         if (depth < kMaxPhotonTreeDepth) {
             if (options.builder == PhotonTreeBuilder::balanced)
-                choice = photon_build::choose_median_split(pos, idx + begin, n, options.leaf_size);
+                choice = photon_build::choose_median_split(rec + begin, n, options.leaf_size);
             else if (large)
-                choice = photon_build::parallel_vvh_split(pos, idx + begin, n, cell, options.query_radius,
-                                                          options.leaf_size);
+                choice = photon_build::parallel_vvh_split(rec + begin, n, cell, options.query_radius, options.leaf_size);
             else
-                choice = photon_build::choose_vvh_split(pos, idx + begin, n, cell, options.query_radius,
-                                                        options.leaf_size);
+                choice = photon_build::choose_vvh_split(rec + begin, n, cell, options.query_radius, options.leaf_size);
         }
         if (choice.make_leaf) {
             out.push_back(KdNode::leaf(begin, n));
             return;
         }
-        const float* c = pos.axis[choice.axis];
+        const int axis = choice.axis;
         const float s = choice.position;
         const std::uint32_t mid =
-            large ? begin + photon_build::parallel_stable_partition(pos, idx + begin, n, choice.axis, s)
+            large ? begin + photon_build::parallel_stable_partition(rec + begin, n, axis, s)
                   : static_cast<std::uint32_t>(
-                        std::stable_partition(idx + begin, idx + end, [&](std::uint32_t i) { return c[i] < s; }) - idx);
+                        std::stable_partition(rec + begin, rec + end,
+                                              [&](const PhotonRecord& r) { return r.position[axis] < s; }) -
+                        rec);
         Cell below = cell, above = cell;
         below.hi[choice.axis] = s;
         above.lo[choice.axis] = s;
@@ -113,23 +112,17 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
                                   std::uint64_t emitted_count, std::uint32_t max_bounces) {
     if (hits.size() > KdNode::kMaxIndex) throw std::invalid_argument("too many photons for one tree");
     const auto n = static_cast<std::uint32_t>(hits.size());
-    std::vector<float> axis[3];
-    for (auto& a : axis) a.resize(n);
+    std::vector<PhotonRecord> rec(n);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 16384), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t i = r.begin(); i != r.end(); ++i)
-            for (int a = 0; a < 3; ++a) axis[a][i] = hits[i].position[a];
+            rec[i] = {{hits[i].position[0], hits[i].position[1], hits[i].position[2]}, i};
     });
-    Positions pos{{axis[0].data(), axis[1].data(), axis[2].data()}};
-
-    BuiltPhotonTree t;
-    t.source.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) t.source[i] = i;
-    Cell root = photon_build::parallel_photon_bounds(pos, t.source.data(), n);
+    Cell root = photon_build::parallel_photon_bounds(rec.data(), n);
 
     PhotonTreeOptions options = options_in;
     options.leaf_size = std::max<std::uint32_t>(options.leaf_size, 1);
     if (options.builder == PhotonTreeBuilder::vvh && !(options.query_radius > 0.0f)) {
-        options.query_radius = photon_build::estimate_query_radius(pos, n);
+        options.query_radius = photon_build::estimate_query_radius(rec.data(), n);
         if (!(options.query_radius > 0.0f) || !std::isfinite(options.query_radius)) {
             float diag = 0.0f;
             for (int a = 0; a < 3; ++a) diag = std::max(diag, root.hi[a] - root.lo[a]);
@@ -137,9 +130,29 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
         }
     }
 
-    Builder builder{pos, t.source.data(), options};
+    BuiltPhotonTree t;
+    Builder builder{rec.data(), options};
     builder.build(0, n, root, 0, t.nodes);
+    t.source.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) t.source[i] = rec[i].index;
 
+    // Encoded in the hits' order (a sequential read of the 64-byte hits), then gathered into
+    // tree order from these 16-byte records: the gather misses the cache a quarter as often.
+    struct Encoded {
+        std::uint32_t power;
+        PackedPhotonDirections directions;
+        std::uint32_t flags;
+    };
+    std::vector<Encoded> encoded(n);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 16384), [&](const tbb::blocked_range<std::uint32_t>& r) {
+        for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
+            const PhotonHit& h = hits[i];
+            encoded[i] = {encode_rgbe(h.power[0], h.power[1], h.power[2]),
+                          {encode_octahedral(h.direction[0], h.direction[1], h.direction[2]),
+                           encode_octahedral(h.normal[0], h.normal[1], h.normal[2])},
+                          h.flags};
+        }
+    });
     t.x.resize(n);
     t.y.resize(n);
     t.z.resize(n);
@@ -148,14 +161,13 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
     t.flags.resize(n);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, n, 16384), [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
-            const PhotonHit& h = hits[t.source[i]];
-            t.x[i] = h.position[0];
-            t.y[i] = h.position[1];
-            t.z[i] = h.position[2];
-            t.power[i] = encode_rgbe(h.power[0], h.power[1], h.power[2]);
-            t.directions[i] = {encode_octahedral(h.direction[0], h.direction[1], h.direction[2]),
-                               encode_octahedral(h.normal[0], h.normal[1], h.normal[2])};
-            t.flags[i] = h.flags;
+            t.x[i] = rec[i].position[0];
+            t.y[i] = rec[i].position[1];
+            t.z[i] = rec[i].position[2];
+            const Encoded& e = encoded[rec[i].index];
+            t.power[i] = e.power;
+            t.directions[i] = e.directions;
+            t.flags[i] = e.flags;
         }
     });
 

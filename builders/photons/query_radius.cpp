@@ -6,7 +6,7 @@
 
 namespace kdpm::photon_build {
 
-float estimate_query_radius(const Positions& p, std::uint32_t count, std::uint32_t k) {
+float estimate_query_radius(const PhotonRecord* photons, std::uint32_t count, std::uint32_t k) {
     if (count < 2 || k == 0) return 0.0f;
     const std::uint32_t samples = std::min<std::uint32_t>(count, 4096);
     const std::uint32_t kk = std::min(k, samples - 1);
@@ -21,7 +21,9 @@ float estimate_query_radius(const Positions& p, std::uint32_t count, std::uint32
         std::uint32_t m = 0;
         for (std::uint32_t s : sample) {
             if (s == qi) continue;
-            float dx = p.axis[0][s] - p.axis[0][qi], dy = p.axis[1][s] - p.axis[1][qi], dz = p.axis[2][s] - p.axis[2][qi];
+            const float* ps = photons[s].position;
+            const float* pq = photons[qi].position;
+            float dx = ps[0] - pq[0], dy = ps[1] - pq[1], dz = ps[2] - pq[2];
             d2[m++] = dx * dx + dy * dy + dz * dz;
         }
         std::nth_element(d2.begin(), d2.begin() + (kk - 1), d2.begin() + m);

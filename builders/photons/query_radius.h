@@ -8,6 +8,6 @@
 
 namespace kdpm::photon_build {
 
-float estimate_query_radius(const Positions& p, std::uint32_t count, std::uint32_t k = 32);
+float estimate_query_radius(const PhotonRecord* photons, std::uint32_t count, std::uint32_t k = 32);
 
 }  // namespace kdpm::photon_build

@@ -4,13 +4,13 @@
 
 namespace kdpm::photon_build {
 
-Cell photon_bounds(const Positions& p, const std::uint32_t* idx, std::uint32_t n) {
+Cell photon_bounds(const PhotonRecord* r, std::uint32_t n) {
     Cell c{};
     for (int a = 0; a < 3; ++a) {
         if (n == 0) continue;
-        float lo = p.axis[a][idx[0]], hi = lo;
+        float lo = r[0].position[a], hi = lo;
         for (std::uint32_t i = 1; i < n; ++i) {
-            float v = p.axis[a][idx[i]];
+            float v = r[i].position[a];
             lo = std::min(lo, v);
             hi = std::max(hi, v);
         }

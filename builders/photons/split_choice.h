@@ -5,8 +5,13 @@
 
 namespace kdpm::photon_build {
 
-struct Positions {
-    const float* axis[3];  // coordinates indexed by hit index
+// A photon as the tree build moves it: its position beside its hit index. The build reorders
+// these records themselves, not indices into the positions, so that every pass over a node
+// (bounds, bins, partition) reads its photons in sequence instead of gathering them from all
+// over the map.
+struct PhotonRecord {
+    float position[3];
+    std::uint32_t index;
 };
 
 struct Cell {
@@ -19,7 +24,7 @@ struct SplitChoice {
     float position = 0.0f;
 };
 
-// Tight bounds of the photons idx[0..n).
-Cell photon_bounds(const Positions& p, const std::uint32_t* idx, std::uint32_t n);
+// Tight bounds of the photons r[0..n).
+Cell photon_bounds(const PhotonRecord* r, std::uint32_t n);
 
 }  // namespace kdpm::photon_build

@@ -16,14 +16,13 @@ double grown_volume(const float lo[3], const float hi[3], double r) {
 
 }  // namespace
 
-void count_vvh_bins(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& b, VvhBins& counts) {
+void count_vvh_bins(const PhotonRecord* r, std::uint32_t n, const Cell& b, VvhBins& counts) {
     for (int a = 0; a < 3; ++a) {
         const float lo = b.lo[a], extent = b.hi[a] - b.lo[a];
         if (!(extent > 0.0f)) continue;
-        const float* c = p.axis[a];
         const float scale = kBins / extent;
         for (std::uint32_t i = 0; i < n; ++i) {
-            int bin = static_cast<int>((c[idx[i]] - lo) * scale);
+            int bin = static_cast<int>((r[i].position[a] - lo) * scale);
             counts[a][bin < 0 ? 0 : (bin >= kBins ? kBins - 1 : bin)]++;
         }
     }
@@ -75,12 +74,12 @@ SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std
     return best_choice;
 }
 
-SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
+SplitChoice choose_vvh_split(const PhotonRecord* r, std::uint32_t n, const Cell& cell,
                              float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs) {
     if (n <= 1) return SplitChoice{};
-    const Cell b = photon_bounds(p, idx, n);
+    const Cell b = photon_bounds(r, n);
     VvhBins counts = {};
-    count_vvh_bins(p, idx, n, b, counts);
+    count_vvh_bins(r, n, b, counts);
     return choose_vvh_split_from_bins(b, counts, n, cell, query_radius, max_leaf_size, costs);
 }
 

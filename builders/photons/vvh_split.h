@@ -19,7 +19,7 @@ struct VvhCosts {
 
 // Leaf when n <= 1, or when n <= max_leaf_size and no split is cheaper; above max_leaf_size
 // the cheapest split is taken anyway (leaf only when all photons coincide).
-SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& cell,
+SplitChoice choose_vvh_split(const PhotonRecord* r, std::uint32_t n, const Cell& cell,
                              float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});
 
 // choose_vvh_split in two steps, so that a large node can count its photons in parallel chunks:
@@ -27,8 +27,8 @@ SplitChoice choose_vvh_split(const Positions& p, const std::uint32_t* idx, std::
 inline constexpr int kVvhBins = 32;
 using VvhBins = std::uint32_t[3][kVvhBins];
 
-// Adds the photons idx[0..n) to `counts` (axes where b is flat are left alone).
-void count_vvh_bins(const Positions& p, const std::uint32_t* idx, std::uint32_t n, const Cell& b, VvhBins& counts);
+// Adds the photons r[0..n) to `counts` (axes where b is flat are left alone).
+void count_vvh_bins(const PhotonRecord* r, std::uint32_t n, const Cell& b, VvhBins& counts);
 
 SplitChoice choose_vvh_split_from_bins(const Cell& b, const VvhBins& counts, std::uint32_t n, const Cell& cell,
                                        float query_radius, std::uint32_t max_leaf_size, const VvhCosts& costs = {});

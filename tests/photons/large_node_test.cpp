@@ -21,8 +21,19 @@ bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 struct Cloud {
     std::vector<float> axis[3];
     std::vector<std::uint32_t> idx;
-    Positions pos() const { return {{axis[0].data(), axis[1].data(), axis[2].data()}}; }
+    // The photons in index order, as the builder moves them.
+    std::vector<PhotonRecord> records() const {
+        std::vector<PhotonRecord> r;
+        for (std::uint32_t i : idx) r.push_back({{axis[0][i], axis[1][i], axis[2][i]}, i});
+        return r;
+    }
 };
+
+std::vector<std::uint32_t> indices(const std::vector<PhotonRecord>& r) {
+    std::vector<std::uint32_t> out;
+    for (const PhotonRecord& p : r) out.push_back(p.index);
+    return out;
+}
 
 // Synthetic photons, in a shuffled index order; the x minimum is a +0 met first and a -0 met
 // last, so a bounds scan must keep the +0.
@@ -46,10 +57,10 @@ Cloud cloud(std::uint32_t n, std::uint32_t seed) {
 TEST_CASE("parallel large-node steps equal the sequential ones", "[photons][builder]") {
     const std::uint32_t n = 3 * kLargeNode + 12345;
     Cloud c = cloud(n, 9);
-    const Positions p = c.pos();
+    const std::vector<PhotonRecord> p = c.records();
     ThreadLimit limit(2);
 
-    const Cell seq = photon_bounds(p, c.idx.data(), n), par = parallel_photon_bounds(p, c.idx.data(), n);
+    const Cell seq = photon_bounds(p.data(), n), par = parallel_photon_bounds(p.data(), n);
     for (int a = 0; a < 3; ++a) {
         CHECK(same_bits(seq.lo[a], par.lo[a]));
         CHECK(same_bits(seq.hi[a], par.hi[a]));
@@ -58,8 +69,8 @@ TEST_CASE("parallel large-node steps equal the sequential ones", "[photons][buil
     Cell cell = seq;
     for (int a = 0; a < 3; ++a) cell.lo[a] -= 1.0f, cell.hi[a] += 1.0f;
     for (float radius : {0.01f, 0.3f}) {
-        const SplitChoice s = choose_vvh_split(p, c.idx.data(), n, cell, radius, 16);
-        const SplitChoice q = parallel_vvh_split(p, c.idx.data(), n, cell, radius, 16);
+        const SplitChoice s = choose_vvh_split(p.data(), n, cell, radius, 16);
+        const SplitChoice q = parallel_vvh_split(p.data(), n, cell, radius, 16);
         CHECK(s.make_leaf == q.make_leaf);
         CHECK(s.axis == q.axis);
         CHECK(same_bits(s.position, q.position));
@@ -68,12 +79,13 @@ TEST_CASE("parallel large-node steps equal the sequential ones", "[photons][buil
     for (int axis = 0; axis < 3; ++axis) {
         // A plane at an existing coordinate: ties go above, as in the builder.
         const float plane = c.axis[axis][c.idx[n / 2]];
-        std::vector<std::uint32_t> expected = c.idx, got = c.idx;
-        const float* coord = p.axis[axis];
+        std::vector<std::uint32_t> expected = c.idx;
+        std::vector<PhotonRecord> got = p;
+        const float* coord = c.axis[axis].data();
         const auto mid = std::stable_partition(expected.begin(), expected.end(),
                                                [&](std::uint32_t i) { return coord[i] < plane; });
-        const std::uint32_t below = parallel_stable_partition(p, got.data(), n, axis, plane);
+        const std::uint32_t below = parallel_stable_partition(got.data(), n, axis, plane);
         CHECK(below == static_cast<std::uint32_t>(mid - expected.begin()));
-        CHECK(got == expected);
+        CHECK(indices(got) == expected);
     }
 }

@@ -186,12 +186,9 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
 //
 // radius_hint > 0: a radius that probably holds k accepted photons, e.g. a neighbouring query's
 // k-th distance plus the distance between the two points (exactly such a bound for the same
-// filter and a sphere). The k-nearest search then starts with that radius instead of
-// max_radius, which prunes most of the tree before the first k photons are found; when it holds
-// fewer than k, the search runs again out to max_radius. Either way the k nearest are found (a
-// search limited to r that finds k photons has found the k nearest overall); only their order in
-// the result may differ, and with it the last bits of the sum, and which of several photons at
-// exactly the k-th distance is kept.
+// filter and a sphere); the search starts there (search_from_hint). The same k nearest are
+// found; only their order in the result may differ, and with it the last bits of the sum, and
+// which of several photons at exactly the k-th distance is kept.
 //
 // memo (CPU only; may be null): the filter's decisions remembered from earlier searches (FilterMemo).
 KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
@@ -218,9 +215,7 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
                    ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, filter, heap)
                    : knn_search(map, position, k, limit, EuclideanMetric{}, filter, heap);
     };
-    const bool hint_tighter = radius_hint > 0.0f && (params.max_radius <= 0.0f || radius_hint < params.max_radius);
-    std::uint32_t found = search(hint_tighter ? radius_hint : params.max_radius);
-    if (hint_tighter && found < k) found = search(params.max_radius);
+    const std::uint32_t found = search_from_hint(search, k, radius_hint, params.max_radius);
     out.count = found;
     if (found == 0) return out;
     float r2 = heap.d2[0];

@@ -40,4 +40,17 @@ struct RadiusHints {
     }
 };
 
+// A k-nearest search started from a hint: search(limit) is a k-nearest search out to `limit`
+// (<= 0: unlimited) that returns how many it found. When radius_hint is tighter than max_radius
+// the search first runs out to the hint, which prunes most of the tree before the first k
+// photons are found, and runs again out to max_radius only when that found fewer than k. Either
+// way the k nearest are found: a search limited to r that finds k photons has found the k
+// nearest overall.
+template <class Search>
+KDPM_HD std::uint32_t search_from_hint(const Search& search, std::uint32_t k, float radius_hint, float max_radius) {
+    const bool tighter = radius_hint > 0.0f && (max_radius <= 0.0f || radius_hint < max_radius);
+    const std::uint32_t found = search(tighter ? radius_hint : max_radius);
+    return tighter && found < k ? search(max_radius) : found;
+}
+
 }  // namespace kdpm

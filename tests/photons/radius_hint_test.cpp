@@ -2,7 +2,9 @@
 // start from a hint, whatever it is, equal estimates without one.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <random>
 
 #include "runtime/photons/radiance_estimate.h"
@@ -85,4 +87,41 @@ TEST_CASE("An estimate started from any radius hint equals the estimate without 
     }
     CHECK(retried > 100);  // the second search did run
     CHECK(checked == 1500);
+}
+
+TEST_CASE("A k-nearest search from a hint finds the k nearest, retrying only when the hint holds fewer",
+          "[photons][hints]") {
+    auto set = test::synthetic_photons(6000, 41);
+    auto tree = build_photon_tree(set.hits, PhotonTreeOptions{});
+    auto view = view_of(tree);
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    static KnnHeap heap;
+    std::uint32_t retried = 0, first_try = 0;
+    for (int i = 0; i < 200; ++i) {
+        const std::uint32_t k = 1 + static_cast<std::uint32_t>(u(rng) * 60.0f);
+        const glm::vec3 q(u(rng), u(rng), u(rng));
+        // Brute force: the k-th smallest squared distance over every photon.
+        std::vector<float> d2;
+        for (std::uint32_t p = 0; p < view.photon_count; ++p) {
+            const float dx = view.x[p] - q.x, dy = view.y[p] - q.y, dz = view.z[p] - q.z;
+            d2.push_back(dx * dx + dy * dy + dz * dz);
+        }
+        std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+        const float want = d2[k - 1];
+        for (float hint : {0.5f * std::sqrt(want), 1.01f * std::sqrt(want) + 1e-6f, 3.0f * std::sqrt(want)}) {
+            int searches = 0;
+            auto search = [&](float limit) {
+                ++searches;
+                return knn_search(view, q, k, limit, heap);
+            };
+            const std::uint32_t found = search_from_hint(search, k, hint, 0.0f);
+            INFO("query " << i << " k " << k << " hint / k-th distance " << hint / std::sqrt(want));
+            REQUIRE(found == k);
+            CHECK(heap.d2[0] == want);
+            (searches == 2 ? retried : first_try)++;
+        }
+    }
+    CHECK(retried >= 200);   // every hint at half the k-th distance
+    CHECK(first_try >= 400);  // every hint at or past it
 }

@@ -107,6 +107,10 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
         t.rows.push_back({fmt("kNN k=%d at %llu primary hits vs nanoflann", k, (unsigned long long)r.primary_hits),
                           ms(ours), ms(theirs), ratio(ours, theirs), target > 0 ? fmt("<= %g", target) : "",
                           target > 0 ? verdict(ours <= target * theirs) : ""});
+        auto plain = p.kdpm_plain_knn_ms.find(k);
+        if (plain != p.kdpm_plain_knn_ms.end())
+            t.rows.push_back({fmt("kNN k=%d, no radius hints (each query from the root)", k), ms(plain->second),
+                              ms(theirs), ratio(plain->second, theirs), "", ""});
     }
     std::string out = t.render(md);
     if (p.embree) {
@@ -117,7 +121,9 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
                    a.global_agreement(), (unsigned long long)a.ours_caustic, (unsigned long long)a.theirs_caustic,
                    a.caustic_agreement(), a.path_agreement());
     }
-    if (p.nanoflann) out += fmt("%skNN cross-check: %.4f of queries have nanoflann's k-th distance\n", md ? "\n" : "", p.knn_agreement);
+    if (p.nanoflann)
+        out += fmt("%skNN cross-check: %.4f of queries have nanoflann's k-th distance (%.4f without radius hints)\n",
+                   md ? "\n" : "", p.knn_agreement, p.plain_knn_agreement);
     return out;
 }
 

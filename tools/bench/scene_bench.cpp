@@ -18,6 +18,7 @@
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_file.h"
 #include "runtime/photons/photon_shooter.h"
+#include "runtime/photons/radius_hints.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
@@ -235,19 +236,40 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 
     // kNN at the primary hit points: ours and (when present) nanoflann's, same photons.
     const std::size_t queries = p.hit_points.size() / 3;
-    std::vector<float> ours_kth(queries), theirs_kth(queries);
+    std::vector<float> ours_kth(queries), plain_kth(queries), theirs_kth(queries);
+    // As the renderer gathers: runs of 64 consecutive queries (a row segment of the image), each
+    // search started from the radius hints of the queries before it in the run (search_from_hint).
+    constexpr std::uint64_t kRun = 64;
     auto run_ours = [&](int k) {
+        const auto kk = static_cast<std::uint32_t>(k);
+        cpu_parallel_for((queries + kRun - 1) / kRun, [&](std::uint64_t run) {
+            KnnHeap heap;
+            RadiusHints hints;
+            for (std::uint64_t q = run * kRun; q < std::min<std::uint64_t>(queries, (run + 1) * kRun); ++q) {
+                const glm::vec3 point(p.hit_points[3 * q], p.hit_points[3 * q + 1], p.hit_points[3 * q + 2]);
+                auto search = [&](float limit) {
+                    return knn_search(photons, point, kk, limit, EuclideanMetric{}, AcceptAll{}, heap);
+                };
+                const std::uint32_t n = search_from_hint(search, kk, hints.hint(point), 0.0f);
+                if (n == kk) hints.remember(point, std::sqrt(heap.d2[0]));
+                ours_kth[q] = n ? heap.d2[0] : 0.0f;
+            }
+        }, 1);
+    };
+    // Each query on its own from the root, as a caller without neighbours would search.
+    auto run_plain = [&](int k) {
         cpu_parallel_for(queries, [&](std::uint64_t q) {
             KnnHeap heap;
             glm::vec3 point(p.hit_points[3 * q], p.hit_points[3 * q + 1], p.hit_points[3 * q + 2]);
             std::uint32_t n = knn_search(photons, point, static_cast<std::uint32_t>(k), 0.0f, EuclideanMetric{},
                                          AcceptAll{}, heap);
-            ours_kth[q] = n ? heap.d2[0] : 0.0f;
+            plain_kth[q] = n ? heap.d2[0] : 0.0f;
         }, 64);
     };
     for (int k : c.ks) {
         run_ours(k);
         peers.kdpm_knn_ms[k] = median_ms(c.frames, [&] { run_ours(k); });
+        peers.kdpm_plain_knn_ms[k] = median_ms(c.frames, [&] { run_plain(k); });
     }
 #ifdef KDPM_HAVE_NANOFLANN
     if (photons.photon_count > 0) {
@@ -268,12 +290,16 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             nano.knn(p.hit_points, k, theirs_kth);
             peers.nanoflann_knn_ms[k] = median_ms(c.frames, [&] { nano.knn(p.hit_points, k, theirs_kth); });
         }
-        // Cross-check on the last k: the k-th nearest distance must agree.
+        // Cross-check on the last k: the k-th nearest distance must agree, with and without hints.
         run_ours(c.ks.back());
-        std::size_t same = 0;
-        for (std::size_t q = 0; q < queries; ++q)
+        run_plain(c.ks.back());
+        std::size_t same = 0, plain_same = 0;
+        for (std::size_t q = 0; q < queries; ++q) {
             if (std::fabs(ours_kth[q] - theirs_kth[q]) <= 1e-5f * std::max(1e-12f, theirs_kth[q])) ++same;
+            if (std::fabs(plain_kth[q] - theirs_kth[q]) <= 1e-5f * std::max(1e-12f, theirs_kth[q])) ++plain_same;
+        }
         peers.knn_agreement = queries ? static_cast<double>(same) / queries : 1.0;
+        peers.plain_knn_agreement = queries ? static_cast<double>(plain_same) / queries : 1.0;
         peers.nanoflann = true;
     }
 #endif

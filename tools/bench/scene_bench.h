@@ -53,7 +53,9 @@ struct PeerFigures {
     double embree16_rays_ms = 0;                          // rtcIntersect16, 4x4-pixel packets, same rays
     double packet_agreement = 0;                          // the same for the packets' hits
     std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
+    std::map<int, double> kdpm_plain_knn_ms;              // kdpm without radius hints: each query from the root
     double knn_agreement = 0;                             // fraction of queries with the same k-th distance
+    double plain_knn_agreement = 0;                       // the same, without radius hints
     // The same photon paths through kdpm's shooter and the Embree photon tracer, all threads.
     double kdpm_shoot_ms = 0, embree_shoot_ms = 0;
     PhotonAgreement photon_agreement;

@@ -23,7 +23,7 @@ install(EXPORT kdpm-targets NAMESPACE kdpm:: DESTINATION ${CMAKE_INSTALL_LIBDIR}
 install(DIRECTORY formats/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/kdpm/formats FILES_MATCHING PATTERN "*.h")
 # The viewer needs GLFW and a window; it is an executable, not part of the library.
 install(DIRECTORY runtime/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/kdpm/runtime
-        FILES_MATCHING PATTERN "*.h" PATTERN "*.cuh" PATTERN "view" EXCLUDE)
+        FILES_MATCHING PATTERN "*.h" PATTERN "*.inc" PATTERN "*.cuh" PATTERN "view" EXCLUDE)
 # kdpm-bench finds its scene cards under share/kdpm when run from an installed prefix.
 install(DIRECTORY scenes DESTINATION ${CMAKE_INSTALL_DATADIR}/kdpm)
 

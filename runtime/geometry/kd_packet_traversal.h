@@ -2,7 +2,8 @@
 // Closest hits of a packet of coherent rays (camera rays of one tile) in one walk of the SAH
 // geometry kd-tree (Wald, Slusallek, Benthin & Wagner 2001: "Interactive rendering with coherent
 // ray tracing"). Each node is read once for the whole packet and its plane tested against four
-// rays per SSE2 instruction; each leaf triangle is tested against four rays at a time.
+// rays per SSE2 instruction, or eight per AVX2 instruction where the CPU has AVX2 (chosen at run
+// time); each leaf triangle is tested against as many rays at a time (kd_packet_walk.inc).
 //
 // The result is the single-ray walk's, bit for bit: every lane keeps the segment the single-ray
 // walk would have at that node, enters exactly the leaves that walk enters, in the same order,
@@ -15,9 +16,9 @@
 #include "formats/host_device.h"
 #include "runtime/geometry/kd_traversal.h"
 
-#if defined(__SSE2__) && !defined(__CUDACC__)
-#include <emmintrin.h>
-#define KDPM_PACKET_SSE2 1
+#if defined(__SSE2__) && defined(__x86_64__) && !defined(__CUDACC__)
+#include <immintrin.h>
+#define KDPM_PACKET_SIMD 1
 #endif
 
 namespace kdpm {
@@ -27,10 +28,10 @@ inline constexpr std::uint32_t kPacketRays = 16;
 
 struct RayPacket {
     // Structure of arrays, lane i = ray i; lanes at or past `count` are ignored.
-    alignas(16) float origin[3][kPacketRays];
-    alignas(16) float direction[3][kPacketRays];
-    alignas(16) float tmin[kPacketRays];
-    alignas(16) float tmax[kPacketRays];
+    alignas(32) float origin[3][kPacketRays];
+    alignas(32) float direction[3][kPacketRays];
+    alignas(32) float tmin[kPacketRays];
+    alignas(32) float tmax[kPacketRays];
     std::uint32_t count = 0;
 
     void set(std::uint32_t lane, const Ray& r) {
@@ -60,245 +61,143 @@ inline bool walks_as_one(const RayPacket& p) {
     return true;
 }
 
-#if defined(KDPM_PACKET_SSE2)
+#if defined(KDPM_PACKET_SIMD)
 
-constexpr int kGroups = kPacketRays / 4;
 using LaneMask = std::uint32_t;  // bit i: lane i
+constexpr LaneMask kAllLanes = (1u << kPacketRays) - 1u;
+static_assert(kPacketRays < 32);
 
-// The four-lane SSE mask of bits 4g..4g+3 of m.
-inline __m128 group_mask(LaneMask m, int g) {
-    const std::uint32_t b = m >> (4 * g);
-    return _mm_castsi128_ps(_mm_set_epi32(-static_cast<int>((b >> 3) & 1u), -static_cast<int>((b >> 2) & 1u),
-                                          -static_cast<int>((b >> 1) & 1u), -static_cast<int>(b & 1u)));
-}
-inline LaneMask bits_of(__m128 m, int g) { return static_cast<LaneMask>(_mm_movemask_ps(m)) << (4 * g); }
-inline __m128 select(__m128 mask, __m128 a, __m128 b) {
-    return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
-}
-
-struct PacketEntry {
-    std::uint32_t node;
-    LaneMask active;
-    // Lanes the single-ray walk pushed here (they crossed the plane); the other active lanes
-    // went to this child directly there and are deferred only because neighbours went near.
-    LaneMask pushed;
-    __m128 tmin[kGroups], tmax[kGroups];
+// The operations kd_packet_walk.inc is written in. SSE2: four lanes.
+struct Sse2Ops {
+    using V = __m128;
+    using VI = __m128i;
+    static constexpr int kWidth = 4;
+    static V load(const float* p) { return _mm_loadu_ps(p); }
+    static void store(float* p, V v) { _mm_storeu_ps(p, v); }
+    static void store_i(std::uint32_t* p, VI v) { _mm_storeu_si128(reinterpret_cast<__m128i*>(p), v); }
+    static V set1(float x) { return _mm_set1_ps(x); }
+    static VI set1_i(int x) { return _mm_set1_epi32(x); }
+    static V zero() { return _mm_setzero_ps(); }
+    static V all_ones() { return _mm_castsi128_ps(_mm_set1_epi32(-1)); }
+    static V add(V a, V b) { return _mm_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm_div_ps(a, b); }
+    static V lt(V a, V b) { return _mm_cmplt_ps(a, b); }
+    static V le(V a, V b) { return _mm_cmple_ps(a, b); }
+    static V gt(V a, V b) { return _mm_cmpgt_ps(a, b); }
+    static V ge(V a, V b) { return _mm_cmpge_ps(a, b); }
+    static V nle(V a, V b) { return _mm_cmpnle_ps(a, b); }  // !(a <= b): true when unordered
+    static V neq(V a, V b) { return _mm_cmpneq_ps(a, b); }  // a != b: true when unordered
+    static V eq_i(VI a, VI b) { return _mm_castsi128_ps(_mm_cmpeq_epi32(a, b)); }
+    static V and_(V a, V b) { return _mm_and_ps(a, b); }
+    static V or_(V a, V b) { return _mm_or_ps(a, b); }
+    static V andnot(V a, V b) { return _mm_andnot_ps(a, b); }  // ~a & b
+    static int movemask(V v) { return _mm_movemask_ps(v); }
+    static V select(V mask, V a, V b) { return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b)); }
+    static VI select_i(V mask, VI a, VI b) {
+        const VI m = _mm_castps_si128(mask);
+        return _mm_or_si128(_mm_and_si128(m, a), _mm_andnot_si128(m, b));
+    }
+    // The lanes whose bit is set in `bits` (the group's kWidth bits).
+    static V lanes_of(LaneMask bits) {
+        const VI lane_bit = _mm_set_epi32(8, 4, 2, 1);
+        return eq_i(_mm_and_si128(_mm_set1_epi32(static_cast<int>(bits)), lane_bit), lane_bit);
+    }
 };
 
-struct PacketHits {
-    __m128 t[kGroups], u[kGroups], v[kGroups];
-    __m128i triangle[kGroups];
+namespace sse2 {
+using S = Sse2Ops;
+#include "runtime/geometry/kd_packet_walk.inc"
+}  // namespace sse2
+
+// AVX2: eight lanes, compiled for AVX2 in this region only and run only where the CPU has it
+// (closest_hits checks once), so one binary runs on every x86-64.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#endif
+struct Avx2Ops {
+    using V = __m256;
+    using VI = __m256i;
+    static constexpr int kWidth = 8;
+    static V load(const float* p) { return _mm256_loadu_ps(p); }
+    static void store(float* p, V v) { _mm256_storeu_ps(p, v); }
+    static void store_i(std::uint32_t* p, VI v) { _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), v); }
+    static V set1(float x) { return _mm256_set1_ps(x); }
+    static VI set1_i(int x) { return _mm256_set1_epi32(x); }
+    static V zero() { return _mm256_setzero_ps(); }
+    static V all_ones() { return _mm256_castsi256_ps(_mm256_set1_epi32(-1)); }
+    static V add(V a, V b) { return _mm256_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm256_div_ps(a, b); }
+    static V lt(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LT_OQ); }
+    static V le(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LE_OQ); }
+    static V gt(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GT_OQ); }
+    static V ge(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GE_OQ); }
+    static V nle(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_NLE_UQ); }
+    static V neq(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_NEQ_UQ); }
+    static V eq_i(VI a, VI b) { return _mm256_castsi256_ps(_mm256_cmpeq_epi32(a, b)); }
+    static V and_(V a, V b) { return _mm256_and_ps(a, b); }
+    static V or_(V a, V b) { return _mm256_or_ps(a, b); }
+    static V andnot(V a, V b) { return _mm256_andnot_ps(a, b); }
+    static int movemask(V v) { return _mm256_movemask_ps(v); }
+    static V select(V mask, V a, V b) { return _mm256_blendv_ps(b, a, mask); }
+    static VI select_i(V mask, VI a, VI b) {
+        return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(b), _mm256_castsi256_ps(a), mask));
+    }
+    static V lanes_of(LaneMask bits) {
+        const VI lane_bit = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+        return eq_i(_mm256_and_si256(_mm256_set1_epi32(static_cast<int>(bits)), lane_bit), lane_bit);
+    }
 };
 
-// intersect_triangle() for four rays: the same operations in the same order, so each lane's
-// t, u, v are the scalar function's bits. Lanes outside `lanes` are left as they are.
-inline void intersect_four(const TriangleRecord& tri, std::uint32_t index, const __m128 (&o)[3], const __m128 (&d)[3],
-                           __m128 tmin, __m128 lanes, __m128& best_t, __m128& best_u, __m128& best_v,
-                           __m128i& best_tri) {
-    const __m128 e1x = _mm_set1_ps(tri.e1[0]), e1y = _mm_set1_ps(tri.e1[1]), e1z = _mm_set1_ps(tri.e1[2]);
-    const __m128 e2x = _mm_set1_ps(tri.e2[0]), e2y = _mm_set1_ps(tri.e2[1]), e2z = _mm_set1_ps(tri.e2[2]);
-    // p = cross(d, e2), glm's operand order
-    const __m128 px = _mm_sub_ps(_mm_mul_ps(d[1], e2z), _mm_mul_ps(e2y, d[2]));
-    const __m128 py = _mm_sub_ps(_mm_mul_ps(d[2], e2x), _mm_mul_ps(e2z, d[0]));
-    const __m128 pz = _mm_sub_ps(_mm_mul_ps(d[0], e2y), _mm_mul_ps(e2x, d[1]));
-    const __m128 det = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e1x, px), _mm_mul_ps(e1y, py)), _mm_mul_ps(e1z, pz));
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-    __m128 ok = _mm_and_ps(lanes, _mm_cmpneq_ps(det, zero));
-    if (_mm_movemask_ps(ok) == 0) return;
-    const __m128 inv_det = _mm_div_ps(one, det);
-    const __m128 sx = _mm_sub_ps(o[0], _mm_set1_ps(tri.v0[0]));
-    const __m128 sy = _mm_sub_ps(o[1], _mm_set1_ps(tri.v0[1]));
-    const __m128 sz = _mm_sub_ps(o[2], _mm_set1_ps(tri.v0[2]));
-    const __m128 uu =
-        _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, px), _mm_mul_ps(sy, py)), _mm_mul_ps(sz, pz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(uu, zero), _mm_cmple_ps(uu, one)));
-    if (_mm_movemask_ps(ok) == 0) return;
-    // q = cross(s, e1)
-    const __m128 qx = _mm_sub_ps(_mm_mul_ps(sy, e1z), _mm_mul_ps(e1y, sz));
-    const __m128 qy = _mm_sub_ps(_mm_mul_ps(sz, e1x), _mm_mul_ps(e1z, sx));
-    const __m128 qz = _mm_sub_ps(_mm_mul_ps(sx, e1y), _mm_mul_ps(e1x, sy));
-    const __m128 vv =
-        _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], qx), _mm_mul_ps(d[1], qy)), _mm_mul_ps(d[2], qz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(vv, zero), _mm_cmple_ps(_mm_add_ps(uu, vv), one)));
-    const __m128 tt =
-        _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(e2x, qx), _mm_mul_ps(e2y, qy)), _mm_mul_ps(e2z, qz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpgt_ps(tt, tmin), _mm_cmplt_ps(tt, best_t)));
-    if (_mm_movemask_ps(ok) == 0) return;
-    best_t = select(ok, tt, best_t);
-    best_u = select(ok, uu, best_u);
-    best_v = select(ok, vv, best_v);
-    const __m128i oki = _mm_castps_si128(ok);
-    best_tri = _mm_or_si128(_mm_and_si128(oki, _mm_set1_epi32(static_cast<int>(index))),
-                            _mm_andnot_si128(oki, best_tri));
+namespace avx2 {
+using S = Avx2Ops;
+#include "runtime/geometry/kd_packet_walk.inc"
+}  // namespace avx2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+
+// Whether this CPU runs the AVX2 walk: asked once.
+inline bool cpu_has_avx2() {
+    static const bool has = __builtin_cpu_supports("avx2");
+    return has;
 }
 
-// The single-ray walk of kd_detail::walk with ClosestVisitor, for all lanes at once.
-inline void closest_hits_sse(const GeometryView& g, const RayPacket& p, Hit* out) {
-    __m128 org[3][kGroups], inv[3][kGroups], ray_tmin[kGroups];
-    __m128 tmin[kGroups], tmax[kGroups];
-    PacketHits h;
-    LaneMask active = 0;
-    for (int q = 0; q < kGroups; ++q) {
-        for (int a = 0; a < 3; ++a) {
-            org[a][q] = _mm_load_ps(&p.origin[a][4 * q]);
-            inv[a][q] = _mm_div_ps(_mm_set1_ps(1.0f), _mm_load_ps(&p.direction[a][4 * q]));
-        }
-        ray_tmin[q] = _mm_load_ps(&p.tmin[4 * q]);
-        h.t[q] = _mm_load_ps(&p.tmax[4 * q]);
-        h.u[q] = h.v[q] = _mm_setzero_ps();
-        h.triangle[q] = _mm_set1_epi32(static_cast<int>(kNoHit));
-    }
-    // Per lane: the scalar bounds clip (kd_detail::clip_to_bounds), so the same starting segment.
-    alignas(16) float t0[kPacketRays], t1[kPacketRays];
-    for (std::uint32_t i = 0; i < kPacketRays; ++i) {
-        t0[i] = p.tmin[i];
-        t1[i] = p.tmax[i];
-        if (i >= p.count) continue;
-        const glm::vec3 o(p.origin[0][i], p.origin[1][i], p.origin[2][i]);
-        const glm::vec3 inv_dir(1.0f / p.direction[0][i], 1.0f / p.direction[1][i], 1.0f / p.direction[2][i]);
-        if (kd_detail::clip_to_bounds(g.info, o, inv_dir, t0[i], t1[i])) active |= 1u << i;
-    }
-    for (int q = 0; q < kGroups; ++q) {
-        tmin[q] = _mm_load_ps(&t0[4 * q]);
-        tmax[q] = _mm_load_ps(&t1[4 * q]);
-    }
-    LaneMask done = ~active;  // lanes whose walk has stopped (or never started)
-
-    if (g.node_count != 0 && active != 0) {
-        const bool dir_not_up[3] = {p.direction[0][0] <= 0.0f, p.direction[1][0] <= 0.0f, p.direction[2][0] <= 0.0f};
-        const float origin0[3] = {p.origin[0][0], p.origin[1][0], p.origin[2][0]};
-        PacketEntry stack[kMaxKdDepth];
-        std::uint32_t sp = 0;
-        std::uint32_t node = 0;
-        const __m128 zero = _mm_setzero_ps();
-        for (;;) {
-            KdNode n = g.nodes[node];
-            while (!n.is_leaf()) {
-                const int axis = n.axis();
-                const float split = n.split();
-                const __m128 split4 = _mm_set1_ps(split);
-                // One origin: the child order is every lane's single-ray order.
-                const float o = origin0[axis];
-                const bool below_first = o < split || (o == split && dir_not_up[axis]);
-                const std::uint32_t below = node + 1, above = n.above_child();
-                const std::uint32_t first = below_first ? below : above;
-                const std::uint32_t second = below_first ? above : below;
-                __m128 tplane[kGroups], cross[kGroups];
-                LaneMask near_lanes = 0, far_lanes = 0, cross_lanes = 0;
-                for (int q = 0; q < kGroups; ++q) {
-                    tplane[q] = _mm_mul_ps(_mm_sub_ps(split4, org[axis][q]), inv[axis][q]);
-                    // near only: !(tplane <= tmax) || tplane <= 0; far only: else tplane < tmin
-                    const __m128 near_only = _mm_or_ps(_mm_cmpnle_ps(tplane[q], tmax[q]), _mm_cmple_ps(tplane[q], zero));
-                    const __m128 far_only = _mm_andnot_ps(near_only, _mm_cmplt_ps(tplane[q], tmin[q]));
-                    cross[q] = _mm_andnot_ps(_mm_or_ps(near_only, far_only), _mm_castsi128_ps(_mm_set1_epi32(-1)));
-                    near_lanes |= bits_of(_mm_or_ps(near_only, cross[q]), q);
-                    far_lanes |= bits_of(_mm_or_ps(far_only, cross[q]), q);
-                    cross_lanes |= bits_of(cross[q], q);
-                }
-                near_lanes &= active;
-                far_lanes &= active;
-                if (far_lanes == 0) {
-                    node = first;
-                } else if (near_lanes == 0) {
-                    node = second;
-                } else {
-                    // Crossing lanes: near [tmin, tplane], far [tplane, tmax]; one-sided lanes keep
-                    // their segment on their side.
-                    assert(sp < kMaxKdDepth && "kd-tree deeper than kMaxKdTreeDepth");
-                    if (sp < kMaxKdDepth) {
-                        PacketEntry& e = stack[sp++];
-                        e.node = second;
-                        e.active = far_lanes;
-                        e.pushed = cross_lanes & active;
-                        for (int q = 0; q < kGroups; ++q) {
-                            e.tmin[q] = select(cross[q], tplane[q], tmin[q]);
-                            e.tmax[q] = tmax[q];
-                        }
-                    }
-                    for (int q = 0; q < kGroups; ++q) tmax[q] = select(cross[q], tplane[q], tmax[q]);
-                    node = first;
-                    active = near_lanes;
-                }
-                if (far_lanes != 0 && near_lanes == 0) active = far_lanes;
-                n = g.nodes[node];
-            }
-            // Leaf: its triangles against the live lanes, then stop the lanes whose hit lies
-            // within their segment of this leaf.
-            const LaneMask live = active & ~done;
-            if (live != 0) {
-                const std::uint32_t first = n.first(), count = n.count();
-                for (int q = 0; q < kGroups; ++q) {
-                    if (((live >> (4 * q)) & 0xfu) == 0) continue;
-                    const __m128 lanes = group_mask(live, q);
-                    const __m128 o[3] = {org[0][q], org[1][q], org[2][q]};
-                    const __m128 d[3] = {_mm_load_ps(&p.direction[0][4 * q]), _mm_load_ps(&p.direction[1][4 * q]),
-                                         _mm_load_ps(&p.direction[2][4 * q])};
-                    for (std::uint32_t i = 0; i < count; ++i) {
-                        const std::uint32_t tri = g.leaf_indices[first + i];
-                        intersect_four(g.triangles[tri], tri, o, d, ray_tmin[q], lanes, h.t[q], h.u[q], h.v[q],
-                                       h.triangle[q]);
-                    }
-                    const __m128 found = _mm_castsi128_ps(
-                        _mm_xor_si128(_mm_cmpeq_epi32(h.triangle[q], _mm_set1_epi32(static_cast<int>(kNoHit))),
-                                      _mm_set1_epi32(-1)));
-                    done |= bits_of(_mm_and_ps(lanes, _mm_and_ps(found, _mm_cmple_ps(h.t[q], tmax[q]))), q);
-                }
-            }
-            // Pop the next entry some lane still needs; a lane whose pushed entry starts beyond
-            // its best hit is finished, as the single-ray walk returns there.
-            bool resumed = false;
-            while (sp > 0 && (~done & ((1u << kPacketRays) - 1u)) != 0) {
-                const PacketEntry& e = stack[--sp];
-                LaneMask lanes = e.active & ~done;
-                const LaneMask check = e.pushed & lanes;
-                for (int q = 0; q < kGroups && check != 0; ++q) {
-                    if (((check >> (4 * q)) & 0xfu) == 0) continue;
-                    const LaneMask beyond = bits_of(_mm_cmpgt_ps(e.tmin[q], h.t[q]), q) & check;
-                    done |= beyond;
-                    lanes &= ~beyond;
-                }
-                if (lanes == 0) continue;
-                node = e.node;
-                active = lanes;
-                for (int q = 0; q < kGroups; ++q) {
-                    tmin[q] = e.tmin[q];
-                    tmax[q] = e.tmax[q];
-                }
-                resumed = true;
-                break;
-            }
-            if (!resumed) break;
-        }
-    }
-    alignas(16) float t[kPacketRays], u[kPacketRays], v[kPacketRays];
-    alignas(16) std::uint32_t tri[kPacketRays];
-    for (int q = 0; q < kGroups; ++q) {
-        _mm_store_ps(&t[4 * q], h.t[q]);
-        _mm_store_ps(&u[4 * q], h.u[q]);
-        _mm_store_ps(&v[4 * q], h.v[q]);
-        _mm_store_si128(reinterpret_cast<__m128i*>(&tri[4 * q]), h.triangle[q]);
-    }
-    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = Hit{t[i], tri[i], u[i], v[i]};
-}
-
-#endif  // KDPM_PACKET_SSE2
+#endif  // KDPM_PACKET_SIMD
 
 }  // namespace packet_detail
 
 // out[i] = closest_hit(g, p.ray(i)) for i < p.count, bit for bit.
-inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out) {
-#if defined(KDPM_PACKET_SSE2)
+// simd: which walk (tests compare them); the default takes AVX2 where the CPU has it.
+enum class PacketIsa { best, sse2, avx2 };
+inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
+#if defined(KDPM_PACKET_SIMD)
     if (p.count > 1 && packet_detail::walks_as_one(p)) {
-        // Lanes past count copy lane 0, so that the SSE groups hold no garbage (their results are dropped).
+        const bool avx2 = simd == PacketIsa::avx2 || (simd == PacketIsa::best && packet_detail::cpu_has_avx2());
+        auto walk = [&](const RayPacket& packet) {
+            if (avx2) packet_detail::avx2::closest_hits_simd(g, packet, out);
+            else packet_detail::sse2::closest_hits_simd(g, packet, out);
+        };
+        // Lanes past count copy lane 0, so that no SIMD lane holds garbage (their results are dropped).
         if (p.count < kPacketRays) {
             RayPacket full = p;
             for (std::uint32_t i = p.count; i < kPacketRays; ++i) full.set(i, p.ray(0));
-            packet_detail::closest_hits_sse(g, full, out);
-            return;
+            walk(full);
+        } else {
+            walk(p);
         }
-        packet_detail::closest_hits_sse(g, p, out);
         return;
     }
+#else
+    (void)simd;
 #endif
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit(g, p.ray(i));
 }

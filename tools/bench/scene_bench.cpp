@@ -13,13 +13,13 @@
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_packet_traversal.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_file.h"
 #include "runtime/photons/photon_shooter.h"
 #include "runtime/photons/radius_hints.h"
 #include "runtime/render/camera.h"
+#include "runtime/render/camera_packet_pass.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/bench/median_time.h"
@@ -92,28 +92,13 @@ double trace_with_kdpm(const GeometryView& g, PrimaryRays& p) {
     });
 }
 
-// The same rays as 16-ray packets of 4x4 pixels (the rays are in row-major order), as the
-// renderer's CPU backend traces its camera rays.
-double trace_packets_with_kdpm(const GeometryView& g, const PrimaryRays& p, std::uint32_t width, std::uint32_t height,
-                               std::vector<Hit>& hits) {
-    hits.resize(p.rays.size());
-    const std::uint32_t blocks_x = (width + 3) / 4, blocks_y = (height + 3) / 4;
+// The same camera rays as the renderer's CPU backend traces them: 16-ray packets of 4x4 pixels
+// (CameraPacketPass, launched as CpuDevice launches it), hits in row-major order like p's.
+double trace_packets_with_kdpm(const GeometryView& g, const PinholeCamera& camera, std::vector<Hit>& hits) {
+    hits.resize(static_cast<std::size_t>(camera.width) * camera.height);
     return median_ms(1, [&] {
-        cpu_parallel_for(static_cast<std::uint64_t>(blocks_x) * blocks_y, [&](std::uint64_t b) {
-            const std::uint32_t x0 = static_cast<std::uint32_t>(b % blocks_x) * 4, y0 = static_cast<std::uint32_t>(b / blocks_x) * 4;
-            RayPacket packet;
-            std::size_t index[kPacketRays];
-            for (std::uint32_t y = y0; y < y0 + 4 && y < height; ++y)
-                for (std::uint32_t x = x0; x < x0 + 4 && x < width; ++x) {
-                    const PeerRay& r = p.rays[static_cast<std::size_t>(y) * width + x];
-                    index[packet.count] = static_cast<std::size_t>(y) * width + x;
-                    packet.set(packet.count++, Ray{glm::vec3(r.origin[0], r.origin[1], r.origin[2]), 0.0f,
-                                                   glm::vec3(r.direction[0], r.direction[1], r.direction[2]), INFINITY});
-                }
-            Hit out[kPacketRays];
-            closest_hits(g, packet, out);
-            for (std::uint32_t i = 0; i < packet.count; ++i) hits[index[i]] = out[i];
-        }, 16);
+        cpu_parallel_for(CameraPacketPass::work_items(camera.width, camera.height),
+                         CameraPacketPass{g, camera, 0, hits.data()}, 16);
     });
 }
 
@@ -174,7 +159,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
     peers.kdpm_rays_ms = median_of(ours);
     std::vector<Hit> packet_hits;
     std::vector<double> packets;
-    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, p, c.width, c.height, packet_hits));
+    const PinholeCamera camera = PinholeCamera::from_record(geometry.camera(), c.width, c.height, 1);  // primary_rays' camera
+    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, camera, packet_hits));
     packets.erase(packets.begin());  // warm-up
     peers.kdpm_packet_rays_ms = median_of(packets);
     std::size_t same_as_single = 0;

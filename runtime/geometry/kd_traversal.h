@@ -43,6 +43,13 @@ KDPM_HD KDPM_INLINE bool clip_to_bounds(const GeometryInfo& info, const glm::vec
     return t0 <= t1;
 }
 
+// Whether a ray from coordinate o (on the node's axis) meets the "below" child first; a ray
+// starting on the plane goes below when its direction there is not up. Shared by the packet walk,
+// whose lanes must order children exactly as this walk does.
+KDPM_HD KDPM_INLINE bool below_first(float o, float split, bool dir_not_up) {
+    return o < split || (o == split && dir_not_up);
+}
+
 // Walks the tree; for each leaf calls visit(first, count, t_leaf_max), which returns true to
 // stop the walk; visit.limit() is the farthest t still of interest. Shared by the closest-hit
 // and any-hit queries.
@@ -70,10 +77,10 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
             const float split = n.split();
             const float o = org[axis];
             const float tplane = (split - o) * inv[axis];
-            const bool below_first = o < split || (o == split && dir_not_up[axis]);
+            const bool near_below = below_first(o, split, dir_not_up[axis]);
             const std::uint32_t below = node + 1, above = n.above_child();
-            const std::uint32_t first = below_first ? below : above;
-            const std::uint32_t second = below_first ? above : below;
+            const std::uint32_t first = near_below ? below : above;
+            const std::uint32_t second = near_below ? above : below;
             // NaN (ray inside the plane) and planes behind or beyond the segment: near side only.
             if (!(tplane <= tmax) || tplane <= 0.0f) {
                 node = first;

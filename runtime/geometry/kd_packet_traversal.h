@@ -2,8 +2,9 @@
 // Closest hits of a packet of coherent rays (camera rays of one tile) in one walk of the SAH
 // geometry kd-tree (Wald, Slusallek, Benthin & Wagner 2001: "Interactive rendering with coherent
 // ray tracing"). Each node is read once for the whole packet and its plane tested against four
-// rays per SSE2 instruction, or eight per AVX2 instruction where the CPU has AVX2 (chosen at run
-// time); each leaf triangle is tested against as many rays at a time (kd_packet_walk.inc).
+// rays per SSE2 instruction, eight per AVX2 instruction or all sixteen per AVX-512 instruction,
+// the widest the CPU has (chosen at run time); each leaf triangle is tested against as many rays
+// at a time (kd_packet_walk.inc).
 //
 // The result is the single-ray walk's, bit for bit: every lane keeps the segment the single-ray
 // walk would have at that node, enters exactly the leaves that walk enters, in the same order,
@@ -71,6 +72,7 @@ static_assert(kPacketRays < 32);
 struct Sse2Ops {
     using V = __m128;
     using VI = __m128i;
+    using M = __m128;  // lane masks: all bits set or clear per lane
     static constexpr int kWidth = 4;
     static V load(const float* p) { return _mm_loadu_ps(p); }
     static void store(float* p, V v) { _mm_storeu_ps(p, v); }
@@ -78,7 +80,7 @@ struct Sse2Ops {
     static V set1(float x) { return _mm_set1_ps(x); }
     static VI set1_i(int x) { return _mm_set1_epi32(x); }
     static V zero() { return _mm_setzero_ps(); }
-    static V all_ones() { return _mm_castsi128_ps(_mm_set1_epi32(-1)); }
+    static M not_(M m) { return _mm_andnot_ps(m, _mm_castsi128_ps(_mm_set1_epi32(-1))); }
     static V add(V a, V b) { return _mm_add_ps(a, b); }
     static V sub(V a, V b) { return _mm_sub_ps(a, b); }
     static V mul(V a, V b) { return _mm_mul_ps(a, b); }
@@ -122,6 +124,7 @@ using S = Sse2Ops;
 struct Avx2Ops {
     using V = __m256;
     using VI = __m256i;
+    using M = __m256;
     static constexpr int kWidth = 8;
     static V load(const float* p) { return _mm256_loadu_ps(p); }
     static void store(float* p, V v) { _mm256_storeu_ps(p, v); }
@@ -129,7 +132,7 @@ struct Avx2Ops {
     static V set1(float x) { return _mm256_set1_ps(x); }
     static VI set1_i(int x) { return _mm256_set1_epi32(x); }
     static V zero() { return _mm256_setzero_ps(); }
-    static V all_ones() { return _mm256_castsi256_ps(_mm256_set1_epi32(-1)); }
+    static M not_(M m) { return _mm256_andnot_ps(m, _mm256_castsi256_ps(_mm256_set1_epi32(-1))); }
     static V add(V a, V b) { return _mm256_add_ps(a, b); }
     static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
     static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
@@ -165,9 +168,70 @@ using S = Avx2Ops;
 #pragma GCC pop_options
 #endif
 
-// Whether this CPU runs the AVX2 walk: asked once.
+// AVX-512: the whole packet in one vector, lane masks in mask registers. Its own region for the
+// same reason as AVX2's. AVX-512 brings fused multiply-add, and GCC contracts a plain multiply
+// feeding an add into one (rounding once where the scalar walk rounds twice) unless told
+// -ffp-contract=off: the arithmetic is spelled with explicit round-to-nearest, which no compiler
+// fuses, whatever the flags of the program that includes this header.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx512f"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx512f")
+#endif
+struct Avx512Ops {
+    using V = __m512;
+    using VI = __m512i;
+    using M = __mmask16;
+    static constexpr int kWidth = 16;
+    static V load(const float* p) { return _mm512_loadu_ps(p); }
+    static void store(float* p, V v) { _mm512_storeu_ps(p, v); }
+    static void store_i(std::uint32_t* p, VI v) { _mm512_storeu_si512(p, v); }
+    static V set1(float x) { return _mm512_set1_ps(x); }
+    static VI set1_i(int x) { return _mm512_set1_epi32(x); }
+    static V zero() { return _mm512_setzero_ps(); }
+    static M not_(M m) { return static_cast<M>(~m); }
+    // The zero-masking forms with every lane kept: GCC 12's plain _round_ forms warn of an
+    // uninitialised source inside its own header.
+    static constexpr int kNearest = _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC;
+    static constexpr M kAll = 0xffff;
+    static V add(V a, V b) { return _mm512_maskz_add_round_ps(kAll, a, b, kNearest); }
+    static V sub(V a, V b) { return _mm512_maskz_sub_round_ps(kAll, a, b, kNearest); }
+    static V mul(V a, V b) { return _mm512_maskz_mul_round_ps(kAll, a, b, kNearest); }
+    static V div(V a, V b) { return _mm512_maskz_div_round_ps(kAll, a, b, kNearest); }
+    static M lt(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_LT_OQ); }
+    static M le(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_LE_OQ); }
+    static M gt(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_GT_OQ); }
+    static M ge(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_GE_OQ); }
+    static M nle(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_NLE_UQ); }
+    static M neq(V a, V b) { return _mm512_cmp_ps_mask(a, b, _CMP_NEQ_UQ); }
+    static M eq_i(VI a, VI b) { return _mm512_cmpeq_epi32_mask(a, b); }
+    static M and_(M a, M b) { return static_cast<M>(a & b); }
+    static M or_(M a, M b) { return static_cast<M>(a | b); }
+    static M andnot(M a, M b) { return static_cast<M>(~a & b); }
+    static int movemask(M m) { return m; }
+    static V select(M mask, V a, V b) { return _mm512_mask_blend_ps(mask, b, a); }
+    static VI select_i(M mask, VI a, VI b) { return _mm512_mask_blend_epi32(mask, b, a); }
+    static M lanes_of(LaneMask bits) { return static_cast<M>(bits); }
+};
+
+namespace avx512 {
+using S = Avx512Ops;
+#include "runtime/geometry/kd_packet_walk.inc"
+}  // namespace avx512
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+
+// Whether this CPU (and its OS) runs the AVX2 / AVX-512 walks: asked once.
 inline bool cpu_has_avx2() {
     static const bool has = __builtin_cpu_supports("avx2");
+    return has;
+}
+inline bool cpu_has_avx512() {
+    static const bool has = __builtin_cpu_supports("avx512f");
     return has;
 }
 
@@ -176,14 +240,19 @@ inline bool cpu_has_avx2() {
 }  // namespace packet_detail
 
 // out[i] = closest_hit(g, p.ray(i)) for i < p.count, bit for bit.
-// simd: which walk (tests compare them); the default takes AVX2 where the CPU has it.
-enum class PacketIsa { best, sse2, avx2 };
+// simd: which walk (tests compare them); the default takes the widest the CPU has.
+enum class PacketIsa { best, sse2, avx2, avx512 };
 inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
 #if defined(KDPM_PACKET_SIMD)
     if (p.count > 1 && packet_detail::walks_as_one(p)) {
-        const bool avx2 = simd == PacketIsa::avx2 || (simd == PacketIsa::best && packet_detail::cpu_has_avx2());
+        if (simd == PacketIsa::best) {
+            simd = packet_detail::cpu_has_avx512() ? PacketIsa::avx512
+                   : packet_detail::cpu_has_avx2() ? PacketIsa::avx2
+                                                   : PacketIsa::sse2;
+        }
         auto walk = [&](const RayPacket& packet) {
-            if (avx2) packet_detail::avx2::closest_hits_simd(g, packet, out);
+            if (simd == PacketIsa::avx512) packet_detail::avx512::closest_hits_simd(g, packet, out);
+            else if (simd == PacketIsa::avx2) packet_detail::avx2::closest_hits_simd(g, packet, out);
             else packet_detail::sse2::closest_hits_simd(g, packet, out);
         };
         // Lanes past count copy lane 0, so that no SIMD lane holds garbage (their results are dropped).

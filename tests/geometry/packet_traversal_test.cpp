@@ -20,13 +20,18 @@ namespace {
 
 bool same_bits(const Hit& a, const Hit& b) { return std::memcmp(&a, &b, sizeof(Hit)) == 0; }
 
-// The packet walks this CPU runs: SSE2 always, AVX2 where the CPU has it.
+// The packet walks this CPU runs: SSE2 always, AVX2 and AVX-512 where the CPU has them.
 std::vector<PacketIsa> packet_isas() {
     std::vector<PacketIsa> isas{PacketIsa::sse2};
 #if defined(KDPM_PACKET_SIMD)
     if (packet_detail::cpu_has_avx2()) isas.push_back(PacketIsa::avx2);
+    if (packet_detail::cpu_has_avx512()) isas.push_back(PacketIsa::avx512);
 #endif
     return isas;
+}
+
+const char* isa_name(PacketIsa isa) {
+    return isa == PacketIsa::avx512 ? "AVX-512" : isa == PacketIsa::avx2 ? "AVX2" : "SSE2";
 }
 
 // Lanes whose packet result differs from closest_hit in any bit, over every packet walk.
@@ -39,7 +44,7 @@ int packet_mismatches(const GeometryView& g, const RayPacket& p) {
             const Hit single = closest_hit(g, p.ray(i));
             if (!same_bits(out[i], single)) {
                 ++bad;
-                UNSCOPED_INFO((isa == PacketIsa::avx2 ? "AVX2" : "SSE2")
+                UNSCOPED_INFO(isa_name(isa)
                               << " lane " << i << ": packet t " << out[i].t << " triangle " << out[i].triangle
                               << ", single t " << single.t << " triangle " << single.triangle);
             }
@@ -97,7 +102,7 @@ TEST_CASE("packets of rays return the single-ray walk's hits bit for bit on rand
     // Both paths ran: most packets as one, the wide cones ray by ray.
     CHECK(inside.as_one > inside.packets / 2);
     CHECK(inside.as_one < inside.packets);
-    if (packet_isas().size() < 2) WARN("this CPU has no AVX2: only the SSE2 packet walk was compared");
+    if (packet_isas().size() < 3) WARN("this CPU lacks AVX2 or AVX-512: only " << packet_isas().size() << " of the 3 packet walks were compared");
 }
 
 TEST_CASE("packets agree with single rays at the walk's edge cases", "[geometry][traversal][packets]") {

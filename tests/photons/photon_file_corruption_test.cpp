@@ -125,3 +125,38 @@ TEST_CASE("Random byte damage to a photon tree never crashes the loader", "[phot
     }
     CHECK(rejected == 300);  // checksums catch every flip and truncation
 }
+
+TEST_CASE("A large photon tree file reports its first fault as a small one does", "[photons][corrupt]") {
+    // Over a megabyte: the checksums run beside the structural checks (tree_validation.cpp).
+    auto set = test::synthetic_photons(60000, 13);
+    auto tree = build_photon_tree(set.hits, PhotonTreeOptions{}, 60000, 4);
+    const auto good = tampered_tree(tree, [](BuiltPhotonTree&) {});
+    REQUIRE(good.size() > (std::size_t{1} << 20));
+    CHECK_NOTHROW(validate_bytes(good));
+    auto message = [](const std::vector<std::uint8_t>& bytes) {
+        try {
+            validate_bytes(bytes);
+        } catch (const FormatError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+
+    // Checksums consistent: the structural fault is named.
+    const auto moved = tampered_tree(tree, [](BuiltPhotonTree& t) { t.x.back() = t.info.bounds_min[0] - 1.0f; });
+    const std::string structural = message(moved);
+    INFO(structural);
+    CHECK_THAT(structural, Catch::Contains("lies outside the cell of leaf"));
+
+    // The same damage written over the good file's bytes: both passes fail, the checksum is named.
+    auto damaged = good;
+    auto reader = ContainerReader::from_bytes(good, "x");
+    const SectionEntry* xs = reader.find(photon_tree_section(PhotonMapKind::global, ptree_field_x));
+    REQUIRE(xs != nullptr);
+    const float outside = tree.info.bounds_min[0] - 1.0f;
+    std::memcpy(damaged.data() + xs->offset + xs->byte_size - sizeof(float), &outside, sizeof outside);
+    const std::string m = message(damaged);
+    CHECK_THAT(m, Catch::Contains("is corrupt (checksum"));
+    INFO(m);
+    CHECK(m.find("lies outside") == std::string::npos);
+}

@@ -64,18 +64,19 @@ struct TracePass {
 
         Pending stack[kStack];
         int sp = 0;
-        stack[sp++] = Pending{cam.origin, cam.direction, glm::vec3(1.0f), 0u};
         glm::vec3 emitted(0.0f);
         std::uint32_t count = 0;
-        bool first = true;
-        while (sp > 0) {
-            const Pending r = stack[--sp];
+        // The camera ray first, held in registers: pushed and popped at once, its 16-byte reload
+        // straddled two 8-byte stores, which the CPU cannot forward (a third of this pass).
+        Pending r{cam.origin, cam.direction, glm::vec3(1.0f), 0u};
+        for (bool first = true;; first = false) {
+            if (!first) {
+                if (sp == 0) break;
+                r = stack[--sp];
+            }
             const Ray ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()};
             const Hit hit = first && camera_hits ? camera_hits[pixel] : closest_hit(geometry, ray);
-            if (first) {
-                write_aovs(pixel, ray, hit);
-                first = false;
-            }
+            if (first) write_aovs(pixel, ray, hit);
             if (!hit.found()) continue;
             const SurfacePoint s = surface_at(geometry, ray, hit);
             // Camera rays filter the texture over their pixel's footprint; later rays read level 0.

@@ -9,9 +9,11 @@
 // The result is the single-ray walk's, bit for bit: every lane keeps the segment the single-ray
 // walk would have at that node, enters exactly the leaves that walk enters, in the same order,
 // tests their triangles with the same arithmetic in the same order, and stops where that walk
-// stops. That needs all rays to order every node's children alike, which a shared origin and
-// shared direction signs guarantee; other packets (a tile straddling an axis of the view) take
-// the single-ray walk. CPU only: on the GPU each thread walks its own ray.
+// stops. That needs all rays to order every node's children alike, which a shared origin
+// guarantees but at a plane through the origin itself, where the rays' direction signs decide:
+// packets from several origins, and the rare packet that meets such a plane with mixed signs,
+// take the single-ray walk. The same walk answers occlusion (shadow rays from one point).
+// CPU only: on the GPU each thread walks its own ray.
 #include <cstdint>
 
 #include "formats/host_device.h"
@@ -51,14 +53,13 @@ struct RayPacket {
 
 namespace packet_detail {
 
-// True when every node orders its children alike for all rays: one origin, and per axis one
-// sign class of the direction (the single-ray walk's tie rule reads `direction <= 0`).
-inline bool walks_as_one(const RayPacket& p) {
-    for (int a = 0; a < 3; ++a) {
-        const bool not_up = p.direction[a][0] <= 0.0f;
-        for (std::uint32_t i = 0; i < p.count; ++i)
-            if (p.origin[a][i] != p.origin[a][0] || (p.direction[a][i] <= 0.0f) != not_up) return false;
-    }
+// One origin: every node then orders its children alike for all rays (the near child is the
+// origin's side), except where the origin lies on the node's plane and the single-ray walk's
+// tie rule reads each ray's `direction <= 0`; the walk gives such packets back (walk_simd).
+inline bool shares_origin(const RayPacket& p) {
+    for (int a = 0; a < 3; ++a)
+        for (std::uint32_t i = 1; i < p.count; ++i)
+            if (p.origin[a][i] != p.origin[a][0]) return false;
     return true;
 }
 
@@ -239,36 +240,48 @@ inline bool cpu_has_avx512() {
 
 }  // namespace packet_detail
 
-// out[i] = closest_hit(g, p.ray(i)) for i < p.count, bit for bit.
-// simd: which walk (tests compare them); the default takes the widest the CPU has.
+// Which walk: the widest the CPU has by default; tests name each.
 enum class PacketIsa { best, sse2, avx2, avx512 };
-inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
+
+namespace packet_detail {
+
+// Runs walk_simd<kAnyHit> for the ISA; false when the packet must go ray by ray.
+template <bool kAnyHit>
+inline bool walk_packet(const GeometryView& g, const RayPacket& p, Hit* out, bool* occluded, PacketIsa simd) {
 #if defined(KDPM_PACKET_SIMD)
-    if (p.count > 1 && packet_detail::walks_as_one(p)) {
-        if (simd == PacketIsa::best) {
-            simd = packet_detail::cpu_has_avx512() ? PacketIsa::avx512
-                   : packet_detail::cpu_has_avx2() ? PacketIsa::avx2
-                                                   : PacketIsa::sse2;
-        }
-        auto walk = [&](const RayPacket& packet) {
-            if (simd == PacketIsa::avx512) packet_detail::avx512::closest_hits_simd(g, packet, out);
-            else if (simd == PacketIsa::avx2) packet_detail::avx2::closest_hits_simd(g, packet, out);
-            else packet_detail::sse2::closest_hits_simd(g, packet, out);
-        };
-        // Lanes past count copy lane 0, so that no SIMD lane holds garbage (their results are dropped).
-        if (p.count < kPacketRays) {
-            RayPacket full = p;
-            for (std::uint32_t i = p.count; i < kPacketRays; ++i) full.set(i, p.ray(0));
-            walk(full);
-        } else {
-            walk(p);
-        }
-        return;
+    if (p.count < 2 || !shares_origin(p)) return false;
+    if (simd == PacketIsa::best)
+        simd = cpu_has_avx512() ? PacketIsa::avx512 : cpu_has_avx2() ? PacketIsa::avx2 : PacketIsa::sse2;
+    auto walk = [&](const RayPacket& packet) {
+        if (simd == PacketIsa::avx512) return avx512::walk_simd<kAnyHit>(g, packet, out, occluded);
+        if (simd == PacketIsa::avx2) return avx2::walk_simd<kAnyHit>(g, packet, out, occluded);
+        return sse2::walk_simd<kAnyHit>(g, packet, out, occluded);
+    };
+    // Lanes past count copy lane 0, so that no SIMD lane holds garbage (their results are dropped).
+    if (p.count < kPacketRays) {
+        RayPacket full = p;
+        for (std::uint32_t i = p.count; i < kPacketRays; ++i) full.set(i, p.ray(0));
+        return walk(full);
     }
+    return walk(p);
 #else
-    (void)simd;
+    (void)g, (void)p, (void)out, (void)occluded, (void)simd;
+    return false;
 #endif
+}
+
+}  // namespace packet_detail
+
+// out[i] = closest_hit(g, p.ray(i)) for i < p.count, bit for bit.
+inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
+    if (packet_detail::walk_packet<false>(g, p, out, nullptr, simd)) return;
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit(g, p.ray(i));
+}
+
+// out[i] = occluded(g, p.ray(i)) for i < p.count: shadow rays from one point.
+inline void occluded_rays(const GeometryView& g, const RayPacket& p, bool* out, PacketIsa simd = PacketIsa::best) {
+    if (packet_detail::walk_packet<true>(g, p, nullptr, out, simd)) return;
+    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded(g, p.ray(i));
 }
 
 }  // namespace kdpm

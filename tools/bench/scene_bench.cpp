@@ -157,16 +157,17 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
     for (int f = 0; f < c.frames + 1; ++f) ours.push_back(trace_with_kdpm(g, p));
     ours.erase(ours.begin());  // warm-up
     peers.kdpm_rays_ms = median_of(ours);
-    std::vector<Hit> packet_hits;
+    std::vector<Hit> kdpm_packet_hits;
     std::vector<double> packets;
     const PinholeCamera camera = PinholeCamera::from_record(geometry.camera(), c.width, c.height, 1);  // primary_rays' camera
-    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, camera, packet_hits));
+    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
     packets.erase(packets.begin());  // warm-up
     peers.kdpm_packet_rays_ms = median_of(packets);
     std::size_t same_as_single = 0;
-    for (std::size_t i = 0; i < packet_hits.size(); ++i)
-        same_as_single += std::memcmp(&packet_hits[i], &p.hits[i], sizeof(Hit)) == 0;
-    peers.packet_same_as_single = packet_hits.empty() ? 1.0 : static_cast<double>(same_as_single) / packet_hits.size();
+    for (std::size_t i = 0; i < kdpm_packet_hits.size(); ++i)
+        same_as_single += std::memcmp(&kdpm_packet_hits[i], &p.hits[i], sizeof(Hit)) == 0;
+    peers.packet_same_as_single =
+        kdpm_packet_hits.empty() ? 1.0 : static_cast<double>(same_as_single) / kdpm_packet_hits.size();
     for (std::size_t i = 0; i < p.rays.size(); ++i)
         if (p.hits[i].found()) {
             const PeerRay& r = p.rays[i];
@@ -194,8 +195,23 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         for (int f = 0; f < c.frames; ++f) builds.push_back(embree.build_ms(EmbreeBuildQuality::high));
         peers.embree_build_ms = median_of(builds);
         std::vector<PeerHit> hits(p.rays.size());
+        std::vector<PeerHit> packet_hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
-        peers.embree_rays_ms = median_ms(c.frames, [&] { embree.intersect(p.rays, hits); });
+        embree.intersect16(p.rays, c.width, c.height, packet_hits);
+        // The ray rows again, each of our passes followed by Embree's on the same rays, so that a
+        // pair sees the same machine (the host's speed drifts by tens of percent within a run);
+        // these short passes take at least seven pairs.
+        std::vector<double> ours1, theirs1, ours16, theirs16;
+        for (int f = 0; f < std::max(c.frames, 7); ++f) {
+            ours1.push_back(trace_with_kdpm(g, p));
+            theirs1.push_back(median_ms(1, [&] { embree.intersect(p.rays, hits); }));
+            ours16.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
+            theirs16.push_back(median_ms(1, [&] { embree.intersect16(p.rays, c.width, c.height, packet_hits); }));
+        }
+        peers.kdpm_rays_ms = median_of(ours1);
+        peers.embree_rays_ms = median_of(theirs1);
+        peers.kdpm_packet_rays_ms = median_of(ours16);
+        peers.embree16_rays_ms = median_of(theirs16);
         // Fraction of rays whose hit agrees with ours: same triangle, or the same distance (ties).
         auto agreement = [&](const std::vector<PeerHit>& theirs) {
             std::size_t same = 0;
@@ -209,11 +225,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             return theirs.empty() ? 1.0 : static_cast<double>(same) / theirs.size();
         };
         peers.ray_agreement = agreement(hits);
-        // The same rays as 16-ray packets of 4x4 pixel tiles (the rays are in row-major order).
-        std::vector<PeerHit> packet_hits(p.rays.size());
-        embree.intersect16(p.rays, c.width, c.height, packet_hits);  // warm-up
-        peers.embree16_rays_ms =
-            median_ms(c.frames, [&] { embree.intersect16(p.rays, c.width, c.height, packet_hits); });
+        // packet_hits: the same rays as 16-ray packets of 4x4 pixel tiles (row-major order).
         peers.packet_agreement = agreement(packet_hits);
         peers.embree = true;
         compare_photon_tracers(c, g, peers);
@@ -272,9 +284,16 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         }
         peers.nanoflann_build_ms = median_of(builds);
         NanoflannPeer nano = peer_of(photons);
+        // Each of our passes followed by nanoflann's on the same queries: a pair sees the same machine.
         for (int k : c.ks) {
             nano.knn(p.hit_points, k, theirs_kth);
-            peers.nanoflann_knn_ms[k] = median_ms(c.frames, [&] { nano.knn(p.hit_points, k, theirs_kth); });
+            std::vector<double> ours, theirs;
+            for (int f = 0; f < c.frames; ++f) {
+                ours.push_back(median_ms(1, [&] { run_ours(k); }));
+                theirs.push_back(median_ms(1, [&] { nano.knn(p.hit_points, k, theirs_kth); }));
+            }
+            peers.kdpm_knn_ms[k] = median_of(ours);
+            peers.nanoflann_knn_ms[k] = median_of(theirs);
         }
         // Cross-check on the last k: the k-th nearest distance must agree, with and without hints.
         run_ours(c.ks.back());

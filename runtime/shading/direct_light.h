@@ -80,7 +80,8 @@ KDPM_HD KDPM_INLINE glm::vec3 direct_light_with(const GeometryView& g, const Lig
         glm::vec3 e[kPacketRays];
         for (std::uint32_t j = first; j < end; ++j) {
             Ray shadow;
-            if (light_sample(g, lights, origin, n, j, side, random, shadow, e[packet.count])) packet.set(packet.count++, shadow);
+            if (light_sample(g, lights, origin, n, j, side, random, shadow, e[packet.count]))
+                packet.set(packet.count++, shadow);
         }
         bool blocked[kPacketRays];
         occluded_rays(g, packet, blocked);

@@ -3,8 +3,16 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
+#include "runtime/geometry/kd_traversal.h"
 #include "runtime/render/renderer.h"
+#include "runtime/shading/direct_light.h"
+#include "runtime/shading/light_power_table.h"
+#include "runtime/shading/ray_offset.h"
+#include "runtime/shading/surface_point.h"
+#include "tests/runtime/built_scene.h"
 #include "tests/runtime/hand_built_scene.h"
 
 using namespace kdpm;
@@ -65,4 +73,53 @@ TEST_CASE("an occluder between floor and light leaves the floor point dark", "[r
     settings.mode = RenderMode::direct;
     RenderResult r = renderer.render(settings);
     CHECK(r.linear.rgb[0] == 0.0f);
+}
+
+TEST_CASE("direct light from shadow-ray packets equals one shadow ray at a time", "[render][packets]") {
+    // The CPU walks a point's shadow rays 16 at a time as packets (direct_light_with); the
+    // reference here traces each alone with occluded(), in the same order: the same bits.
+    test::BuiltScene scene(3000, 7, 8, 8);
+    const GeometryView& g = scene.views.geometry;
+    const LightPowerTable table = light_power_table(g);
+    const LightSelection lights = table.selection();
+    REQUIRE(lights.count == 1);
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int points = 0, lit = 0, shadowed = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        // A point on the soup: where a random ray from above first meets it.
+        const Ray probe{glm::vec3(u(rng), 2.0f, u(rng)), 0.0f, glm::vec3(0.3f * u(rng), -1.0f, 0.3f * u(rng)), 1e30f};
+        const Hit hit = closest_hit(g, probe);
+        if (!hit.found()) continue;
+        ++points;
+        const SurfacePoint s = surface_at(g, probe, hit);
+        const glm::vec3 n = s.geometric_normal;  // facing the probe, as the renderer's vertices do
+        const glm::vec3 origin = offset_origin(s.position, n, render_ray_offset(g.info), true);
+        const glm::vec3 albedo(0.7f, 0.5f, 0.3f);
+        for (std::uint32_t samples : {1u, 5u, 16u, 64u}) {
+            const ShadingRandom random{static_cast<std::uint32_t>(trial), samples};
+            const glm::vec3 packed = direct_light_with(g, lights, origin, n, albedo, samples, random);
+            std::uint32_t side = 1;
+            while (side * side < samples) ++side;
+            glm::vec3 irradiance(0.0f);
+            for (std::uint32_t j = 0; j < side * side; ++j) {
+                Ray shadow;
+                glm::vec3 e;
+                if (!light_sample(g, lights, origin, n, j, side, random, shadow, e)) continue;
+                if (occluded(g, shadow)) {
+                    ++shadowed;
+                    continue;
+                }
+                ++lit;
+                irradiance += e;
+            }
+            const glm::vec3 single = lambert_brdf(albedo) * irradiance / static_cast<float>(side * side);
+            INFO("trial " << trial << ", " << samples << " samples");
+            CHECK(std::memcmp(&packed, &single, sizeof packed) == 0);
+        }
+    }
+    // The soup both hides and shows the light from many of its points.
+    CHECK(points > 100);
+    CHECK(lit > 1000);
+    CHECK(shadowed > 1000);
 }

@@ -30,6 +30,16 @@ struct CameraPacketPass {
         const std::uint32_t x0 = static_cast<std::uint32_t>(item % blocks_x) * kBlock;
         const std::uint32_t y0 = static_cast<std::uint32_t>(item / blocks_x) * kBlock;
         RayPacket packet;
+        Hit out[kPacketRays];
+#if defined(KDPM_PACKET_SIMD)
+        if (camera.samples <= 1 && x0 + kBlock <= camera.width && y0 + kBlock <= camera.height) {
+            centre_rays(x0, y0, packet);
+            closest_hits(geometry, packet, out);
+            for (std::uint32_t i = 0; i < kPacketRays; ++i)
+                hits[static_cast<std::uint64_t>(y0 + i / kBlock) * camera.width + x0 + i % kBlock] = out[i];
+            return;
+        }
+#endif
         std::uint64_t pixel[kPacketRays];
         for (std::uint32_t y = y0; y < y0 + kBlock && y < camera.height; ++y)
             for (std::uint32_t x = x0; x < x0 + kBlock && x < camera.width; ++x) {
@@ -38,10 +48,41 @@ struct CameraPacketPass {
                 // The trace pass's camera ray, exactly.
                 packet.set(packet.count++, Ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()});
             }
-        Hit out[kPacketRays];
         closest_hits(geometry, packet, out);
         for (std::uint32_t i = 0; i < packet.count; ++i) hits[pixel[i]] = out[i];
     }
+
+#if defined(KDPM_PACKET_SIMD)
+    // The pixel-centre rays of the full block at (x0, y0), row by row, four lanes per SSE2
+    // instruction: PinholeCamera::ray's operations in its order (glm's normalize is v times
+    // 1 / sqrt of the dot product, summed x + y then z), so the trace pass's rays bit for bit.
+    void centre_rays(std::uint32_t x0, std::uint32_t y0, RayPacket& packet) const {
+        static_assert(kBlock == 4);
+        const __m128 one = _mm_set1_ps(1.0f), two = _mm_set1_ps(2.0f);
+        const __m128 columns = _mm_setr_ps(static_cast<float>(x0), static_cast<float>(x0 + 1),
+                                           static_cast<float>(x0 + 2), static_cast<float>(x0 + 3));
+        const __m128 width = _mm_set1_ps(static_cast<float>(camera.width));
+        const __m128 ndc_x = _mm_sub_ps(_mm_div_ps(_mm_mul_ps(two, _mm_add_ps(columns, _mm_set1_ps(0.5f))), width), one);
+        for (std::uint32_t row = 0; row < kBlock; ++row) {
+            const float y = static_cast<float>(y0 + row);
+            const __m128 ndc_y = _mm_set1_ps(1.0f - 2.0f * (y + 0.5f) / static_cast<float>(camera.height));
+            __m128 d[3];
+            for (int a = 0; a < 3; ++a)
+                d[a] = _mm_add_ps(_mm_add_ps(_mm_set1_ps(camera.forward[a]), _mm_mul_ps(ndc_x, _mm_set1_ps(camera.right[a]))),
+                                  _mm_mul_ps(ndc_y, _mm_set1_ps(camera.up[a])));
+            const __m128 length2 =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(d[0], d[0]), _mm_mul_ps(d[1], d[1])), _mm_mul_ps(d[2], d[2]));
+            const __m128 inverse = _mm_div_ps(one, _mm_sqrt_ps(length2));
+            for (int a = 0; a < 3; ++a) {
+                _mm_storeu_ps(&packet.direction[a][row * kBlock], _mm_mul_ps(d[a], inverse));
+                _mm_storeu_ps(&packet.origin[a][row * kBlock], _mm_set1_ps(camera.eye[a]));
+            }
+            _mm_storeu_ps(&packet.tmin[row * kBlock], _mm_setzero_ps());
+            _mm_storeu_ps(&packet.tmax[row * kBlock], _mm_set1_ps(std::numeric_limits<float>::infinity()));
+        }
+        packet.count = kPacketRays;
+    }
+#endif
 };
 
 }  // namespace kdpm

@@ -54,12 +54,14 @@ bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
 }  // namespace
 
 TEST_CASE("Camera rays traced in packets leave the trace pass's frame unchanged", "[render][packets]") {
-    // No multiple of 4: the edge blocks are partial packets. Two samples: the second jitters.
+    // No multiple of 4: the edge blocks are partial packets. One sample per pixel (the pass
+    // makes the pixel-centre rays of full blocks four at a time), and two: the second jitters.
     const std::uint32_t width = 61, height = 37;
     test::BuiltScene scene(3000, 5, width, height);
-    const PinholeCamera camera = PinholeCamera::from_record(scene.views.camera, width, height, 2);
-    for (std::uint32_t sample = 0; sample < 2; ++sample) {
-        INFO("sample " << sample);
+    const std::uint32_t samples = GENERATE(1u, 2u);
+    const PinholeCamera camera = PinholeCamera::from_record(scene.views.camera, width, height, samples);
+    for (std::uint32_t sample = 0; sample < samples; ++sample) {
+        INFO(samples << " samples, sample " << sample);
         const TracedFrame single = trace(scene, camera, sample, false);
         const TracedFrame packed = trace(scene, camera, sample, true);
         std::uint64_t vertices = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <cstdio>
+#include <functional>
 #include <thread>
 
 #include "builders/geometry/geometry_file_builder.h"
@@ -145,8 +146,13 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, Pe
 }
 #endif
 
+// kdpm's offline stages on this scene's inputs, with all threads, for timing beside their peers.
+struct KdpmStages {
+    std::function<void()> build_high, build_fast, photon_trees;
+};
+
 void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, const PhotonMaps& maps,
-                   SceneBenchResult& out) {
+                   const KdpmStages& stages, SceneBenchResult& out) {
     const PhotonMapView& photons = maps.global;
     PeerFigures& peers = out.peers;
     PrimaryRays p = primary_rays(geometry.camera(), c.width, c.height);
@@ -188,12 +194,20 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         }
         EmbreePeer embree(vertices, static_cast<int>(std::thread::hardware_concurrency()));
         (void)embree.build_ms();  // warm-up: Embree starts its threads on the first build
-        std::vector<double> medium, builds;
+        std::vector<double> medium, builds, ours_high, ours_fast;
         for (int f = 0; f < c.frames; ++f) medium.push_back(embree.build_ms(EmbreeBuildQuality::medium));
         peers.embree_medium_build_ms = median_of(medium);
-        // The high-quality build last: rtcIntersect1 below traces through it.
-        for (int f = 0; f < c.frames; ++f) builds.push_back(embree.build_ms(EmbreeBuildQuality::high));
+        // Our builds and Embree's high-quality one in turn, so that each round sees one machine
+        // (the host's speed drifts by tens of percent within a run); Embree's last: rtcIntersect1
+        // below traces through it.
+        for (int f = 0; f < c.frames; ++f) {
+            ours_high.push_back(median_ms(1, stages.build_high));
+            ours_fast.push_back(median_ms(1, stages.build_fast));
+            builds.push_back(embree.build_ms(EmbreeBuildQuality::high));
+        }
         peers.embree_build_ms = median_of(builds);
+        peers.kdpm_build_ms = median_of(ours_high);
+        peers.kdpm_fast_build_ms = median_of(ours_fast);
         std::vector<PeerHit> hits(p.rays.size());
         std::vector<PeerHit> packet_hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
@@ -276,13 +290,15 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         auto peer_of = [](const PhotonMapView& m) {
             return NanoflannPeer({m.x, m.photon_count}, {m.y, m.photon_count}, {m.z, m.photon_count});
         };
-        std::vector<double> builds;
-        for (int f = 0; f < c.frames; ++f) {
+        std::vector<double> builds, ours;
+        for (int f = 0; f < c.frames; ++f) {  // ours and theirs in turn, as the geometry builds
+            ours.push_back(median_ms(1, stages.photon_trees));
             double ms = peer_of(photons).build_ms();
             if (maps.caustic.photon_count > 0) ms += peer_of(maps.caustic).build_ms();
             builds.push_back(ms);
         }
         peers.nanoflann_build_ms = median_of(builds);
+        peers.kdpm_photon_trees_ms = median_of(ours);
         NanoflannPeer nano = peer_of(photons);
         // Each of our passes followed by nanoflann's on the same queries: a pair sees the same machine.
         for (int k : c.ks) {
@@ -397,11 +413,19 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
         modes.say = [&](const std::string& what) { say(c, what); };
         out.mode_frames = measure_mode_frames(loaded.views(), modes);
     }
-    if (c.peers) compare_peers(c, geometry, loaded.views().photons, out);
     const int all = c.threads.back();
     out.peers.kdpm_build_ms = out.geometry_build_ms[all];
     out.peers.kdpm_fast_build_ms = out.geometry_build_fast_ms[all];
     out.peers.kdpm_photon_trees_ms = out.photon_tree_ms[all];
+    if (c.peers) {
+        // The peers time these again beside their own (all threads), replacing the figures above.
+        ThreadLimit limit(all);
+        KdpmStages stages;
+        stages.build_high = [&] { (void)build_geometry_file(scene, params); };
+        stages.build_fast = [&] { (void)build_geometry_file(scene, fast); };
+        stages.photon_trees = [&] { (void)build_photon_map_file(set, vvh, {}); };
+        compare_peers(c, geometry, loaded.views().photons, stages, out);
+    }
     return out;
 }
 

@@ -30,24 +30,26 @@ struct CameraPacketPass {
         const std::uint32_t x0 = static_cast<std::uint32_t>(item % blocks_x) * kBlock;
         const std::uint32_t y0 = static_cast<std::uint32_t>(item / blocks_x) * kBlock;
         RayPacket packet;
-        Hit out[kPacketRays];
+        std::uint64_t pixel[kPacketRays];
+        bool made = false;
 #if defined(KDPM_PACKET_SIMD)
         if (camera.samples <= 1 && x0 + kBlock <= camera.width && y0 + kBlock <= camera.height) {
             centre_rays(x0, y0, packet);
-            closest_hits(geometry, packet, out);
             for (std::uint32_t i = 0; i < kPacketRays; ++i)
-                hits[static_cast<std::uint64_t>(y0 + i / kBlock) * camera.width + x0 + i % kBlock] = out[i];
-            return;
+                pixel[i] = static_cast<std::uint64_t>(y0 + i / kBlock) * camera.width + x0 + i % kBlock;
+            made = true;
         }
 #endif
-        std::uint64_t pixel[kPacketRays];
-        for (std::uint32_t y = y0; y < y0 + kBlock && y < camera.height; ++y)
-            for (std::uint32_t x = x0; x < x0 + kBlock && x < camera.width; ++x) {
-                const CameraRay r = camera.ray(x, y, sample);
-                pixel[packet.count] = static_cast<std::uint64_t>(y) * camera.width + x;
-                // The trace pass's camera ray, exactly.
-                packet.set(packet.count++, Ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()});
-            }
+        if (!made) {  // jittered samples and partial edge blocks: the camera's rays one by one
+            for (std::uint32_t y = y0; y < y0 + kBlock && y < camera.height; ++y)
+                for (std::uint32_t x = x0; x < x0 + kBlock && x < camera.width; ++x) {
+                    const CameraRay r = camera.ray(x, y, sample);
+                    pixel[packet.count] = static_cast<std::uint64_t>(y) * camera.width + x;
+                    // The trace pass's camera ray, exactly.
+                    packet.set(packet.count++, Ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()});
+                }
+        }
+        Hit out[kPacketRays];
         closest_hits(geometry, packet, out);
         for (std::uint32_t i = 0; i < packet.count; ++i) hits[pixel[i]] = out[i];
     }

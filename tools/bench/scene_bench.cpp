@@ -158,17 +158,21 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
     PrimaryRays p = primary_rays(geometry.camera(), c.width, c.height);
     const GeometryView& g = geometry.view();
 
-    // Our rays: median of several passes over the same rays.
-    std::vector<double> ours;
-    for (int f = 0; f < c.frames + 1; ++f) ours.push_back(trace_with_kdpm(g, p));
-    ours.erase(ours.begin());  // warm-up
-    peers.kdpm_rays_ms = median_of(ours);
+    // Our rays, single and in packets: a first pass each for the hits (and to warm up); with
+    // Embree the timings come from the pairs below, without it from passes of their own.
     std::vector<Hit> kdpm_packet_hits;
-    std::vector<double> packets;
     const PinholeCamera camera = PinholeCamera::from_record(geometry.camera(), c.width, c.height, 1);  // primary_rays' camera
-    for (int f = 0; f < c.frames + 1; ++f) packets.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
-    packets.erase(packets.begin());  // warm-up
+    (void)trace_with_kdpm(g, p);
+    (void)trace_packets_with_kdpm(g, camera, kdpm_packet_hits);
+#ifndef KDPM_HAVE_EMBREE
+    std::vector<double> ours, packets;
+    for (int f = 0; f < c.frames; ++f) {
+        ours.push_back(trace_with_kdpm(g, p));
+        packets.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
+    }
+    peers.kdpm_rays_ms = median_of(ours);
     peers.kdpm_packet_rays_ms = median_of(packets);
+#endif
     std::size_t same_as_single = 0;
     for (std::size_t i = 0; i < kdpm_packet_hits.size(); ++i)
         same_as_single += std::memcmp(&kdpm_packet_hits[i], &p.hits[i], sizeof(Hit)) == 0;
@@ -278,13 +282,18 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             plain_kth[q] = n ? heap.d2[0] : 0.0f;
         }, 64);
     };
+#ifdef KDPM_HAVE_NANOFLANN
+    const bool paired_knn = photons.photon_count > 0;  // timed beside nanoflann's below
+#else
+    const bool paired_knn = false;
+#endif
     for (int k : c.ks) {
         run_ours(k);
-        peers.kdpm_knn_ms[k] = median_ms(c.frames, [&] { run_ours(k); });
+        if (!paired_knn) peers.kdpm_knn_ms[k] = median_ms(c.frames, [&] { run_ours(k); });
         peers.kdpm_plain_knn_ms[k] = median_ms(c.frames, [&] { run_plain(k); });
     }
 #ifdef KDPM_HAVE_NANOFLANN
-    if (photons.photon_count > 0) {
+    if (paired_knn) {
         say(c, "nanoflann: k-nearest queries at the same points");
         // nanoflann's kd-tree build over the photons of both maps, as kdpm-build-photons builds both.
         auto peer_of = [](const PhotonMapView& m) {

@@ -1,0 +1,120 @@
+#pragma once
+// A leaf's triangles against one ray, four at a time (SSE2, CPU only). The single-ray walk's
+// leaf loop tests one triangle after another, and for incoherent rays (photon paths, bounces)
+// each test's early exits are branches the CPU cannot predict; here every lane runs the whole of
+// intersect_triangle's arithmetic, the same float operations in the same order, and only the
+// lanes' verdicts are read. The results are the scalar loop's bit for bit: the closest hit is
+// the lowest t, the first of the leaf's order among equal t (the scalar loop replaces a hit only
+// with a strictly nearer one), with that triangle's u and v.
+#include <cstdint>
+
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/ray.h"
+
+#if defined(__SSE2__) && defined(__x86_64__) && !defined(__CUDA_ARCH__)
+#include <emmintrin.h>
+#define KDPM_LEAF_SIMD 1
+#endif
+
+namespace kdpm {
+
+#if defined(KDPM_LEAF_SIMD)
+namespace leaf_simd_detail {
+
+// intersect_triangle for the triangles a[0..3] and one ray: the lanes that hit with t in
+// (tmin, tmax) as bits 0..3, and their t, u, v.
+struct Lanes4 {
+    int hits;
+    alignas(16) float t[4], u[4], v[4];
+};
+
+inline void intersect4(const TriangleRecord* const a[4], const Ray& ray, float tmax, Lanes4& out) {
+    // TriangleRecord is three rows of four: (v0, material), (e1, source), (e2, flags).
+    const float* r0 = reinterpret_cast<const float*>(a[0]);
+    const float* r1 = reinterpret_cast<const float*>(a[1]);
+    const float* r2 = reinterpret_cast<const float*>(a[2]);
+    const float* r3 = reinterpret_cast<const float*>(a[3]);
+    __m128 v0x = _mm_loadu_ps(r0), v0y = _mm_loadu_ps(r1), v0z = _mm_loadu_ps(r2), v0w = _mm_loadu_ps(r3);
+    _MM_TRANSPOSE4_PS(v0x, v0y, v0z, v0w);
+    __m128 e1x = _mm_loadu_ps(r0 + 4), e1y = _mm_loadu_ps(r1 + 4), e1z = _mm_loadu_ps(r2 + 4), e1w = _mm_loadu_ps(r3 + 4);
+    _MM_TRANSPOSE4_PS(e1x, e1y, e1z, e1w);
+    __m128 e2x = _mm_loadu_ps(r0 + 8), e2y = _mm_loadu_ps(r1 + 8), e2z = _mm_loadu_ps(r2 + 8), e2w = _mm_loadu_ps(r3 + 8);
+    _MM_TRANSPOSE4_PS(e2x, e2y, e2z, e2w);
+
+    const __m128 dx = _mm_set1_ps(ray.direction.x), dy = _mm_set1_ps(ray.direction.y), dz = _mm_set1_ps(ray.direction.z);
+    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+    // p = cross(d, e2), det = dot(e1, p): glm's operand order and sum order, as the scalar test.
+    const __m128 px = _mm_sub_ps(_mm_mul_ps(dy, e2z), _mm_mul_ps(dz, e2y));
+    const __m128 py = _mm_sub_ps(_mm_mul_ps(dz, e2x), _mm_mul_ps(dx, e2z));
+    const __m128 pz = _mm_sub_ps(_mm_mul_ps(dx, e2y), _mm_mul_ps(dy, e2x));
+    const __m128 det = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e1x, px), _mm_mul_ps(e1y, py)), _mm_mul_ps(e1z, pz));
+    __m128 ok = _mm_cmpneq_ps(det, zero);  // true for NaN: NaN fails every later test, as in the scalar
+    const __m128 inv_det = _mm_div_ps(one, det);
+    const __m128 sx = _mm_sub_ps(_mm_set1_ps(ray.origin.x), v0x);
+    const __m128 sy = _mm_sub_ps(_mm_set1_ps(ray.origin.y), v0y);
+    const __m128 sz = _mm_sub_ps(_mm_set1_ps(ray.origin.z), v0z);
+    const __m128 uu = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, px), _mm_mul_ps(sy, py)), _mm_mul_ps(sz, pz)), inv_det);
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(uu, zero), _mm_cmple_ps(uu, one)));
+    // q = cross(s, e1)
+    const __m128 qx = _mm_sub_ps(_mm_mul_ps(sy, e1z), _mm_mul_ps(sz, e1y));
+    const __m128 qy = _mm_sub_ps(_mm_mul_ps(sz, e1x), _mm_mul_ps(sx, e1z));
+    const __m128 qz = _mm_sub_ps(_mm_mul_ps(sx, e1y), _mm_mul_ps(sy, e1x));
+    const __m128 vv = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, qx), _mm_mul_ps(dy, qy)), _mm_mul_ps(dz, qz)), inv_det);
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(vv, zero), _mm_cmple_ps(_mm_add_ps(uu, vv), one)));
+    const __m128 tt = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(e2x, qx), _mm_mul_ps(e2y, qy)), _mm_mul_ps(e2z, qz)), inv_det);
+    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpgt_ps(tt, _mm_set1_ps(ray.tmin)), _mm_cmplt_ps(tt, _mm_set1_ps(tmax))));
+    out.hits = _mm_movemask_ps(ok);
+    _mm_store_ps(out.t, tt);
+    _mm_store_ps(out.u, uu);
+    _mm_store_ps(out.v, vv);
+}
+
+// The group of up to four leaf triangles from leaf_indices[at]. Lanes past `count` repeat the
+// group's last triangle: it is already loaded, and a repeat can neither add a verdict nor win a
+// tie against the lane it repeats (a hit must be strictly nearer to replace one).
+inline void gather4(const GeometryView& g, std::uint32_t at, std::uint32_t count, std::uint32_t index[4],
+                    const TriangleRecord* tri[4]) {
+    const std::uint32_t m = count < 4 ? count : 4;
+    for (std::uint32_t j = 0; j < 4; ++j) {
+        index[j] = g.leaf_indices[at + (j < m ? j : m - 1)];
+        tri[j] = &g.triangles[index[j]];
+    }
+}
+
+}  // namespace leaf_simd_detail
+
+// The scalar leaf loop's closest hit over leaf_indices[first, first + count), into `hit` (its t
+// is the current limit).
+inline void closest_in_leaf(const GeometryView& g, const Ray& ray, std::uint32_t first, std::uint32_t count,
+                            Hit& hit) {
+    using namespace leaf_simd_detail;
+    for (std::uint32_t base = 0; base < count; base += 4) {
+        std::uint32_t index[4];
+        const TriangleRecord* tri[4];
+        gather4(g, first + base, count - base, index, tri);
+        Lanes4 r;
+        intersect4(tri, ray, hit.t, r);
+        // In leaf order, each against the nearest so far: the scalar loop's rule.
+        for (int lanes = r.hits; lanes != 0; lanes &= lanes - 1) {
+            const int j = __builtin_ctz(static_cast<unsigned>(lanes));
+            if (r.t[j] < hit.t) hit = Hit{r.t[j], index[j], r.u[j], r.v[j]};
+        }
+    }
+}
+
+// Whether any triangle of the leaf is hit with t in (ray.tmin, ray.tmax).
+inline bool any_in_leaf(const GeometryView& g, const Ray& ray, std::uint32_t first, std::uint32_t count) {
+    using namespace leaf_simd_detail;
+    for (std::uint32_t base = 0; base < count; base += 4) {
+        std::uint32_t index[4];
+        const TriangleRecord* tri[4];
+        gather4(g, first + base, count - base, index, tri);
+        Lanes4 r;
+        intersect4(tri, ray, ray.tmax, r);
+        if (r.hits != 0) return true;
+    }
+    return false;
+}
+#endif
+
+}  // namespace kdpm

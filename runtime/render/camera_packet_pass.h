@@ -1,8 +1,8 @@
 #pragma once
-// The CPU backend's first step of a frame sample: the closest hit of every camera ray, traced
-// as 16-ray packets of 4x4 pixels (kd_packet_traversal.h), a third to a half of the time of one
-// ray at a time on the shipped and shared scenes. The trace pass then starts each pixel from its stored
-// hit; the hits are the single-ray walk's bit for bit, so the image is the same.
+// The closest hit of every camera ray of a frame sample, traced as 16-ray packets of 4x4 pixels
+// (kd_packet_traversal.h), a third to a half of the time of one ray at a time on the shipped and
+// shared scenes; the hits are the single-ray walk's bit for bit. The CPU backend's trace pass
+// starts each pixel from its packet's hit (PacketTracePass); this pass stores them per pixel.
 #include <cstdint>
 #include <limits>
 
@@ -26,11 +26,20 @@ struct CameraPacketPass {
     }
 
     void operator()(std::uint64_t item) const {
+        RayPacket packet;
+        std::uint64_t pixel[kPacketRays];
+        Hit out[kPacketRays];
+        trace_block(item, packet, pixel, out);
+        for (std::uint32_t i = 0; i < packet.count; ++i) hits[pixel[i]] = out[i];
+    }
+
+    // Block `item`'s camera rays (lane i: the ray of pixel[i], row-major index) and their
+    // closest hits.
+    void trace_block(std::uint64_t item, RayPacket& packet, std::uint64_t (&pixel)[kPacketRays],
+                     Hit (&out)[kPacketRays]) const {
         const std::uint32_t blocks_x = (camera.width + kBlock - 1) / kBlock;
         const std::uint32_t x0 = static_cast<std::uint32_t>(item % blocks_x) * kBlock;
         const std::uint32_t y0 = static_cast<std::uint32_t>(item / blocks_x) * kBlock;
-        RayPacket packet;
-        std::uint64_t pixel[kPacketRays];
         bool made = false;
 #if defined(KDPM_PACKET_SIMD)
         if (camera.samples <= 1 && x0 + kBlock <= camera.width && y0 + kBlock <= camera.height) {
@@ -49,9 +58,7 @@ struct CameraPacketPass {
                     packet.set(packet.count++, Ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()});
                 }
         }
-        Hit out[kPacketRays];
         closest_hits(geometry, packet, out);
-        for (std::uint32_t i = 0; i < packet.count; ++i) hits[pixel[i]] = out[i];
     }
 
 #if defined(KDPM_PACKET_SIMD)

@@ -10,7 +10,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
-#include "runtime/render/camera_packet_pass.h"
+#include "runtime/render/packet_trace_pass.h"
 #include "runtime/render/final_gather_pass.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/irradiance_cache.h"
@@ -65,7 +65,6 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     auto gathered = dev.template scratch<glm::vec3>(plan.gather_photons ? slots : 0);
     const AovArrays<Device> aov_arrays(dev, want, pixels);
     constexpr bool packets = requires { requires Device::traces_packets; };
-    auto camera_hits = dev.template scratch<Hit>(packets && !plan.path_trace ? pixels : 0);
 
     FrameBuffersView fb;
     fb.width = plan.width;
@@ -93,13 +92,11 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     IrradianceCache& cache = plan.kept_cache ? *plan.kept_cache : fresh_cache;
     const std::uint64_t records_before = cache.tree.records().size(), points_before = cache.points;
     for (std::uint32_t s = 0; s < spp && !plan.path_trace; ++s) {
-        TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
-        if constexpr (packets) {
-            dev.launch(CameraPacketPass::work_items(plan.width, plan.height),
-                       CameraPacketPass{geometry, plan.camera, s, camera_hits.data()});
-            trace.camera_hits = camera_hits.data();
-        }
-        dev.launch(pixels, trace);
+        const TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
+        if constexpr (packets)
+            dev.launch(PacketTracePass::work_items(plan.width, plan.height), PacketTracePass{trace});
+        else
+            dev.launch(pixels, trace);
         times.ray_tracing_ms += watch.lap_ms();
         report(s, 1);
 

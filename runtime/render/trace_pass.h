@@ -44,9 +44,6 @@ struct TracePass {
     std::uint32_t sample = 0;
     std::uint32_t max_depth = 8;
     float epsilon = 1e-4f;  // ray offset from surfaces, scaled to the scene
-    // The camera rays' closest hits, per pixel, when a packet pass has traced them already
-    // (CameraPacketPass, CPU); null: the camera ray is traced here like the others.
-    const Hit* camera_hits = nullptr;
 
     struct Pending {
         glm::vec3 origin, direction, throughput;
@@ -60,8 +57,12 @@ struct TracePass {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
         const std::uint32_t x = static_cast<std::uint32_t>(pixel % frame.width);
         const std::uint32_t y = static_cast<std::uint32_t>(pixel / frame.width);
-        const CameraRay cam = camera.ray(x, y, sample);
+        trace_pixel(pixel, camera.ray(x, y, sample), nullptr);
+    }
 
+    // The pixel's sample from its camera ray `cam`; `camera_hit`: that ray's closest hit when a
+    // packet has traced it already (CPU, PacketTracePass), else null and traced here.
+    KDPM_HD void trace_pixel(std::uint64_t pixel, const CameraRay& cam, const Hit* camera_hit) const {
         Pending stack[kStack];
         int sp = 0;
         glm::vec3 emitted(0.0f);
@@ -75,7 +76,7 @@ struct TracePass {
                 r = stack[--sp];
             }
             const Ray ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()};
-            const Hit hit = first && camera_hits ? camera_hits[pixel] : closest_hit(geometry, ray);
+            const Hit hit = first && camera_hit ? *camera_hit : closest_hit(geometry, ray);
             if (first) write_aovs(pixel, ray, hit);
             if (!hit.found()) continue;
             const SurfacePoint s = surface_at(geometry, ray, hit);

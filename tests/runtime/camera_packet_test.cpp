@@ -1,12 +1,12 @@
-// The CPU backend traces camera rays in 4x4 packets before the trace pass (CameraPacketPass);
-// the trace pass must then record the very same frame as when it traces them itself.
+// The CPU backend traces camera rays in 4x4 packets and goes on with each pixel's trace pass
+// from its packet's hit (PacketTracePass): the very same frame as the trace pass alone.
 #include <catch2/catch.hpp>
 
 #include <cstring>
 #include <vector>
 
 #include "runtime/backend/cpu_parallel_for.h"
-#include "runtime/render/camera_packet_pass.h"
+#include "runtime/render/packet_trace_pass.h"
 #include "runtime/render/trace_pass.h"
 #include "runtime/shading/ray_offset.h"
 #include "tests/runtime/built_scene.h"
@@ -36,13 +36,10 @@ TracedFrame trace(const test::BuiltScene& scene, const PinholeCamera& camera, st
     fb.accum = accum.data();
     fb.depth = f.depth.data();
     TracePass pass{scene.views.geometry, camera, fb, sample, 8, render_ray_offset(scene.views.geometry.info)};
-    std::vector<Hit> hits(pixels);
-    if (packets) {
-        cpu_parallel_for(CameraPacketPass::work_items(camera.width, camera.height),
-                         CameraPacketPass{scene.views.geometry, camera, sample, hits.data()});
-        pass.camera_hits = hits.data();
-    }
-    cpu_parallel_for(pixels, pass);
+    if (packets)
+        cpu_parallel_for(PacketTracePass::work_items(camera.width, camera.height), PacketTracePass{pass});
+    else
+        cpu_parallel_for(pixels, pass);
     return f;
 }
 

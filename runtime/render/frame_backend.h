@@ -18,6 +18,8 @@ public:
     virtual std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
                                               std::uint32_t k) = 0;
     virtual double upload_ms() const { return 0.0; }
+    // Host memory the backend keeps between frames for its next frame's arrays.
+    virtual std::uint64_t kept_bytes() const { return 0; }
 };
 
 std::unique_ptr<FrameBackend> make_cpu_frame_backend(const SceneViews& scene);

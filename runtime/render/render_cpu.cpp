@@ -14,9 +14,13 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
+        device.cache = &kept_;
         const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
         run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
+        kept_.trim();  // only what this frame used again is kept for the next
     }
+
+    std::uint64_t kept_bytes() const override { return kept_.kept_bytes(); }
 
     std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
                                       std::uint32_t k) override {
@@ -27,6 +31,7 @@ public:
 private:
     SceneViews scene_;
     LightPowerTable lights_;
+    HostBlockCache kept_;  // the frame's arrays, from one frame to the next
 };
 
 }  // namespace

@@ -172,9 +172,10 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     if (plan.gather_photons && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");
+    // Memory the backend keeps from the last frame is this frame's to use again.
     check_frame_memory(plan.width, plan.height,
                        frame_memory_bytes(plan.width, plan.height, plan.gather_photons, settings.aovs),
-                       available_memory_bytes());
+                       available_memory_bytes() + impl_->kept_bytes());
     if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
     if (plan.gather_photons && settings.fixed_radius &&
         !(settings.max_radius > 0.0f || (settings.max_radius < 0.0f && scene_.photons.typical_radius > 0.0f)))

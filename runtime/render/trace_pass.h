@@ -28,7 +28,7 @@ KDPM_HD KDPM_INLINE void write_first_hit_aovs(const GeometryView& geometry, cons
     if (sample != 0) return;
     const bool found = hit.found();
     SurfacePoint s{};
-    if (found) s = surface_at(geometry, ray, hit);
+    if (found && (frame.normal || frame.position)) s = surface_at(geometry, ray, hit);  // only if asked for
     if (frame.depth) frame.depth[pixel] = found ? hit.t : std::numeric_limits<float>::infinity();
     if (frame.normal) frame.normal[pixel] = found ? s.geometric_normal : glm::vec3(0.0f);
     if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);

@@ -69,16 +69,27 @@ inline void intersect4(const TriangleRecord* const a[4], const Ray& ray, float t
     _mm_store_ps(out.v, vv);
 }
 
-// The group of up to four leaf triangles from leaf_indices[at]. Lanes past `count` repeat the
-// group's last triangle: it is already loaded, and a repeat can neither add a verdict nor win a
-// tie against the lane it repeats (a hit must be strictly nearer to replace one).
-inline void gather4(const GeometryView& g, std::uint32_t at, std::uint32_t count, std::uint32_t index[4],
-                    const TriangleRecord* tri[4]) {
-    const std::uint32_t m = count < 4 ? count : 4;
-    for (std::uint32_t j = 0; j < 4; ++j) {
-        index[j] = g.leaf_indices[at + (j < m ? j : m - 1)];
-        tri[j] = &g.triangles[index[j]];
+// The leaf's triangles in groups of four, in leaf order: on_group(index, lanes) for each, with
+// t limited by limit() as it is when the group is tested; stops when on_group returns true.
+// Lanes past the leaf's end repeat the group's last triangle: it is already loaded, and a
+// repeat can neither add a verdict nor win a tie against the lane it repeats (a hit must be
+// strictly nearer to replace one).
+template <class Limit, class OnGroup>
+inline bool each_group(const GeometryView& g, const Ray& ray, std::uint32_t first, std::uint32_t count,
+                       const Limit& limit, const OnGroup& on_group) {
+    for (std::uint32_t base = 0; base < count; base += 4) {
+        const std::uint32_t m = count - base < 4 ? count - base : 4;
+        std::uint32_t index[4];
+        const TriangleRecord* tri[4];
+        for (std::uint32_t j = 0; j < 4; ++j) {
+            index[j] = g.leaf_indices[first + base + (j < m ? j : m - 1)];
+            tri[j] = &g.triangles[index[j]];
+        }
+        Lanes4 lanes;
+        intersect4(tri, ray, limit(), lanes);
+        if (on_group(index, lanes)) return true;
     }
+    return false;
 }
 
 }  // namespace leaf_simd_detail
@@ -88,32 +99,21 @@ inline void gather4(const GeometryView& g, std::uint32_t at, std::uint32_t count
 inline void closest_in_leaf(const GeometryView& g, const Ray& ray, std::uint32_t first, std::uint32_t count,
                             Hit& hit) {
     using namespace leaf_simd_detail;
-    for (std::uint32_t base = 0; base < count; base += 4) {
-        std::uint32_t index[4];
-        const TriangleRecord* tri[4];
-        gather4(g, first + base, count - base, index, tri);
-        Lanes4 r;
-        intersect4(tri, ray, hit.t, r);
+    each_group(g, ray, first, count, [&] { return hit.t; }, [&](const std::uint32_t(&index)[4], const Lanes4& r) {
         // In leaf order, each against the nearest so far: the scalar loop's rule.
         for (int lanes = r.hits; lanes != 0; lanes &= lanes - 1) {
             const int j = __builtin_ctz(static_cast<unsigned>(lanes));
             if (r.t[j] < hit.t) hit = Hit{r.t[j], index[j], r.u[j], r.v[j]};
         }
-    }
+        return false;
+    });
 }
 
 // Whether any triangle of the leaf is hit with t in (ray.tmin, ray.tmax).
 inline bool any_in_leaf(const GeometryView& g, const Ray& ray, std::uint32_t first, std::uint32_t count) {
     using namespace leaf_simd_detail;
-    for (std::uint32_t base = 0; base < count; base += 4) {
-        std::uint32_t index[4];
-        const TriangleRecord* tri[4];
-        gather4(g, first + base, count - base, index, tri);
-        Lanes4 r;
-        intersect4(tri, ray, ray.tmax, r);
-        if (r.hits != 0) return true;
-    }
-    return false;
+    return each_group(g, ray, first, count, [&] { return ray.tmax; },
+                      [](const std::uint32_t(&)[4], const Lanes4& r) { return r.hits != 0; });
 }
 #endif
 

@@ -77,12 +77,11 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
         root.lo[a] = info.bounds_min[a];
         root.hi[a] = info.bounds_max[a];
     }
-    stack.push_back(root);
     std::uint64_t visited = 0, next_photon = 0, leaves = 0;
     std::uint32_t depth_seen = 0, largest_leaf = 0;
-    while (!stack.empty()) {
-        Item it = stack.back();
-        stack.pop_back();
+    // The "below" child is walked next in place; only the "above" child goes on the stack.
+    Item it = root;
+    for (bool more = true; more;) {
         if (it.node != visited) fail("nodes are not one tree in depth-first order (node " + std::to_string(it.node) + ")");
         ++visited;
         if (it.depth > kMaxPhotonTreeDepth) fail("deeper than " + std::to_string(kMaxPhotonTreeDepth));
@@ -111,6 +110,11 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
                         fail("photon " + std::to_string(p) + " lies outside the cell of leaf " + std::to_string(it.node));
                 }
             next_photon += node.count();
+            more = !stack.empty();
+            if (more) {
+                it = stack.back();
+                stack.pop_back();
+            }
             continue;
         }
         const int axis = node.axis();
@@ -119,15 +123,14 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
         if (!std::isfinite(s)) fail("node " + std::to_string(it.node) + " has a non-finite split");
         if (above <= it.node + 1 || above >= nodes.size() || it.node + 1 >= nodes.size())
             fail("node " + std::to_string(it.node) + " has a child index out of range");
-        Item lo = it, hi = it;
-        lo.node = it.node + 1;
+        Item& hi = stack.emplace_back(it);
         hi.node = above;
-        lo.depth = hi.depth = it.depth + 1;
-        lo.hi[axis] = s;
-        lo.hi_open[axis] = true;
+        hi.depth = it.depth + 1;
         hi.lo[axis] = s;
-        stack.push_back(hi);
-        stack.push_back(lo);
+        it.node = it.node + 1;
+        it.depth = hi.depth;
+        it.hi[axis] = s;
+        it.hi_open[axis] = true;
     }
     if (visited != nodes.size()) fail("unreachable nodes");
     if (next_photon != n) fail("leaves cover " + std::to_string(next_photon) + " of " + std::to_string(n) + " photons");

@@ -52,6 +52,7 @@ struct RadianceEstimate {
 struct SurfacePhotonFilter {
     const std::uint32_t* flags;
     const PackedPhotonDirections* directions;
+    const float* unpacked;  // PhotonMapView::unpacked: when set, the decoded vectors are read
     glm::vec3 normal;
     float min_normal_cos;
     std::uint32_t min_bounce;
@@ -62,7 +63,7 @@ struct SurfacePhotonFilter {
 
     KDPM_HD SurfacePhotonFilter(const PhotonMapView& map, glm::vec3 n, float min_cos, std::uint32_t min_bounce_,
                                 std::uint32_t exclude)
-        : flags(map.flags), directions(map.directions), normal(n), min_normal_cos(min_cos),
+        : flags(map.flags), directions(map.directions), unpacked(map.unpacked), normal(n), min_normal_cos(min_cos),
           min_bounce(min_bounce_), exclude_flags(exclude), check_flags(min_bounce_ > 0 || exclude != 0) {
         const float n2 = n.x * n.x + n.y * n.y + n.z * n.z;
         quick = n2 > 0.999f && n2 < 1.001f && (min_cos <= -1.0f || (min_cos >= 0.05f && min_cos <= 1.0f));
@@ -90,11 +91,19 @@ struct SurfacePhotonFilter {
     }
 
     KDPM_HD bool exact(std::uint32_t p) const {
+        if (unpacked) return exact_from(unpacked + 6 * static_cast<std::uint64_t>(p), unpacked + 6 * static_cast<std::uint64_t>(p) + 3);
         float d[3], nn[3];
         decode_octahedral(directions[p].direction, d);
         if (d[0] * normal.x + d[1] * normal.y + d[2] * normal.z >= 0.0f) return false;  // from behind
         if (min_normal_cos <= -1.0f) return true;
         decode_octahedral(directions[p].normal, nn);
+        return nn[0] * normal.x + nn[1] * normal.y + nn[2] * normal.z >= min_normal_cos;
+    }
+
+    // exact() from the decoded direction d and surface normal nn.
+    KDPM_HD bool exact_from(const float* d, const float* nn) const {
+        if (d[0] * normal.x + d[1] * normal.y + d[2] * normal.z >= 0.0f) return false;  // from behind
+        if (min_normal_cos <= -1.0f) return true;
         return nn[0] * normal.x + nn[1] * normal.y + nn[2] * normal.z >= min_normal_cos;
     }
 
@@ -128,7 +137,7 @@ struct SurfacePhotonFilter {
 
     KDPM_HD bool operator()(std::uint32_t p) const {
         if (!passes_flags(p)) return false;
-        if (!quick) return exact(p);
+        if (!quick || unpacked) return exact(p);  // decoded already: the exact test is the cheap one
         float r[3];
         unfolded(directions[p].direction, r);
         return decide_unfolded(p, r, nullptr);

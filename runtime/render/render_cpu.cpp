@@ -1,5 +1,6 @@
 // The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
 #include "runtime/backend/cpu_device.h"
+#include "runtime/photons/unpacked_directions.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/shading/light_power_table.h"
 #include "runtime/render/photon_density_pass.h"
@@ -15,6 +16,7 @@ public:
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
         device.cache = &kept_;
+        if (plan.gather_photons) unpack_once();
         const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
         run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
         kept_.trim();  // only what this frame used again is kept for the next
@@ -29,9 +31,22 @@ public:
     }
 
 private:
+    // The photon maps' vectors decoded, for every gather of this renderer (the first frame that
+    // gathers pays for it: a few milliseconds for the shared scenes' half a million photons).
+    void unpack_once() {
+        if (unpacked_) return;
+        unpacked_ = true;
+        global_vectors_ = unpack_directions(scene_.photons.global);
+        caustic_vectors_ = unpack_directions(scene_.photons.caustic);
+        scene_.photons.global.unpacked = global_vectors_.empty() ? nullptr : global_vectors_.data();
+        scene_.photons.caustic.unpacked = caustic_vectors_.empty() ? nullptr : caustic_vectors_.data();
+    }
+
     SceneViews scene_;
     LightPowerTable lights_;
     HostBlockCache kept_;  // the frame's arrays, from one frame to the next
+    bool unpacked_ = false;
+    std::vector<float> global_vectors_, caustic_vectors_;
 };
 
 }  // namespace

@@ -1,0 +1,93 @@
+// Decoded photon vectors (unpack_directions, PhotonMapView::unpacked): the surface filter reads
+// them instead of decoding, with every decision the same, and a radiance estimate is the same
+// bit for bit, with and without a FilterMemo.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "runtime/photons/filter_memo.h"
+#include "runtime/photons/radiance_estimate.h"
+#include "runtime/photons/unpacked_directions.h"
+#include "tests/photons/synthetic_photons.h"
+#include "tests/support/built_tree_view.h"
+
+using namespace kdpm;
+
+TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]") {
+    auto tree = build_photon_tree(test::synthetic_photons(3000, 51).hits, PhotonTreeOptions{});
+    const PhotonMapView map = view_of(tree);
+    const std::vector<float> v = unpack_directions(map);
+    REQUIRE(v.size() == 6u * map.photon_count);
+    for (std::uint32_t p = 0; p < map.photon_count; ++p) {
+        float d[3], n[3];
+        decode_octahedral(map.directions[p].direction, d);
+        decode_octahedral(map.directions[p].normal, n);
+        REQUIRE(std::memcmp(d, &v[6 * p], sizeof d) == 0);
+        REQUIRE(std::memcmp(n, &v[6 * p + 3], sizeof n) == 0);
+    }
+    PhotonMapView empty;
+    CHECK(unpack_directions(empty).empty());
+}
+
+TEST_CASE("The surface filter decides alike from decoded and from packed vectors", "[photons][unpacked]") {
+    auto tree = build_photon_tree(test::synthetic_photons(9000, 53).hits, PhotonTreeOptions{});
+    const PhotonMapView packed = view_of(tree);
+    const std::vector<float> vectors = unpack_directions(packed);
+    PhotonMapView unpacked = packed;
+    unpacked.unpacked = vectors.data();
+    // Unit normals (the quick path), a non-unit one (the exact path), and cosines for a direction
+    // test only (-1), the quick margins (0.05..1) and below them (0.01).
+    const glm::vec3 normals[] = {{0, 1, 0}, {0.6f, 0.8f, 0.0f}, {0, 0, -1}, {0.3f, 0.3f, 0.3f}};
+    const float cosines[] = {-1.0f, 0.7f, 0.05f, 1.0f, 0.01f};
+    std::uint64_t accepted = 0, asked = 0;
+    static FilterMemo memo;
+    for (const glm::vec3& n : normals)
+        for (float c : cosines)
+            for (std::uint32_t min_bounce : {0u, 1u}) {
+                const SurfacePhotonFilter a(packed, n, c, min_bounce, 0), b(unpacked, n, c, min_bounce, 0);
+                memo.use_for(unpacked, n, c, min_bounce, 0);
+                for (std::uint32_t p = 0; p < packed.photon_count; p += 3) {
+                    const bool want = a(p);
+                    REQUIRE(b(p) == want);
+                    REQUIRE(b.exact(p) == a.exact(p));
+                    REQUIRE(memo.decide(p, b) == want);
+                    accepted += want;
+                    ++asked;
+                }
+            }
+    CHECK(accepted > asked / 10);  // both verdicts occur
+    CHECK(accepted < asked);
+}
+
+TEST_CASE("Radiance estimates from decoded vectors equal those from packed ones", "[photons][unpacked]") {
+    auto tree = build_photon_tree(test::synthetic_photons(20000, 57).hits, PhotonTreeOptions{});
+    const PhotonMapView packed = view_of(tree);
+    const std::vector<float> vectors = unpack_directions(packed);
+    PhotonMapView unpacked = packed;
+    unpacked.unpacked = vectors.data();
+    std::mt19937 rng(59);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    static KnnHeap heap;
+    static FilterMemo memo_a, memo_b;
+    std::uint32_t lit = 0;
+    for (int q = 0; q < 400; ++q) {
+        const glm::vec3 pos(u(rng), u(rng), u(rng));
+        const glm::vec3 normal = q % 2 ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+        RadianceEstimateParams params;
+        params.k = q % 3 == 0 ? 8 : 32;
+        params.min_normal_cos = q % 5 == 0 ? -1.0f : 0.5f;
+        const bool memo = q % 4 < 2;
+        const RadianceEstimate a = estimate_radiance(packed, pos, normal, glm::vec3(0.5f), params, heap, 0.0f,
+                                                     memo ? &memo_a : nullptr);
+        const RadianceEstimate b = estimate_radiance(unpacked, pos, normal, glm::vec3(0.5f), params, heap, 0.0f,
+                                                     memo ? &memo_b : nullptr);
+        INFO("query " << q);
+        REQUIRE(a.count == b.count);
+        REQUIRE(std::memcmp(&a.radius, &b.radius, sizeof a.radius) == 0);
+        REQUIRE(std::memcmp(&a.radiance, &b.radiance, sizeof a.radiance) == 0);
+        lit += a.count > 0;
+    }
+    CHECK(lit > 200);
+}

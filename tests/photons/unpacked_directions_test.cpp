@@ -15,6 +15,22 @@
 
 using namespace kdpm;
 
+namespace {
+
+// A synthetic photon tree, viewed with packed vectors only and with its decoded vectors.
+struct BothViews {
+    BuiltPhotonTree tree;
+    PhotonMapView packed, unpacked;
+    std::vector<float> vectors;
+    BothViews(std::uint32_t photons, std::uint32_t seed)
+        : tree(build_photon_tree(test::synthetic_photons(photons, seed).hits, PhotonTreeOptions{})),
+          packed(view_of(tree)), unpacked(packed), vectors(unpack_directions(packed)) {
+        unpacked.unpacked = vectors.data();
+    }
+};
+
+}  // namespace
+
 TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]") {
     auto tree = build_photon_tree(test::synthetic_photons(3000, 51).hits, PhotonTreeOptions{});
     const PhotonMapView map = view_of(tree);
@@ -32,11 +48,8 @@ TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]
 }
 
 TEST_CASE("The surface filter decides alike from decoded and from packed vectors", "[photons][unpacked]") {
-    auto tree = build_photon_tree(test::synthetic_photons(9000, 53).hits, PhotonTreeOptions{});
-    const PhotonMapView packed = view_of(tree);
-    const std::vector<float> vectors = unpack_directions(packed);
-    PhotonMapView unpacked = packed;
-    unpacked.unpacked = vectors.data();
+    const BothViews views(9000, 53);
+    const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
     // Unit normals (the quick path), a non-unit one (the exact path), and cosines for a direction
     // test only (-1), the quick margins (0.05..1) and below them (0.01).
     const glm::vec3 normals[] = {{0, 1, 0}, {0.6f, 0.8f, 0.0f}, {0, 0, -1}, {0.3f, 0.3f, 0.3f}};
@@ -62,11 +75,8 @@ TEST_CASE("The surface filter decides alike from decoded and from packed vectors
 }
 
 TEST_CASE("Radiance estimates from decoded vectors equal those from packed ones", "[photons][unpacked]") {
-    auto tree = build_photon_tree(test::synthetic_photons(20000, 57).hits, PhotonTreeOptions{});
-    const PhotonMapView packed = view_of(tree);
-    const std::vector<float> vectors = unpack_directions(packed);
-    PhotonMapView unpacked = packed;
-    unpacked.unpacked = vectors.data();
+    const BothViews views(20000, 57);
+    const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
     std::mt19937 rng(59);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     static KnnHeap heap;

@@ -18,7 +18,7 @@ struct CpuDevice {
     static constexpr bool arrays_on_host = true;
     // The photon gather runs a tile of pixels per work item (PhotonTileGatherPass).
     static constexpr bool gathers_by_tile = true;
-    // Camera rays are traced in packets first (CameraPacketPass).
+    // Camera rays are traced in packets, each block's trace pass going on from them (PacketTracePass).
     static constexpr bool traces_packets = true;
     // Where arrays of plain data come from and go back to when set (a frame backend's cache,
     // kept from frame to frame); else they are allocated and freed as any.

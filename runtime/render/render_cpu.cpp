@@ -2,6 +2,7 @@
 #include "runtime/backend/cpu_device.h"
 #include "runtime/photons/unpacked_directions.h"
 #include "runtime/render/frame_backend.h"
+#include "runtime/render/frame_memory.h"
 #include "runtime/shading/light_power_table.h"
 #include "runtime/render/photon_density_pass.h"
 
@@ -33,9 +34,14 @@ public:
 private:
     // The photon maps' vectors decoded, for every gather of this renderer (the first frame that
     // gathers pays for it: a few milliseconds for the shared scenes' half a million photons).
+    // Where 24 bytes a photon would take more than a quarter of the memory left, the filter
+    // decodes per use instead: the same decisions, slower.
     void unpack_once() {
         if (unpacked_) return;
         unpacked_ = true;
+        const std::uint64_t photons =
+            std::uint64_t{scene_.photons.global.photon_count} + scene_.photons.caustic.photon_count;
+        if (photons * 6 * sizeof(float) > available_memory_bytes() / 4) return;
         global_vectors_ = unpack_directions(scene_.photons.global);
         caustic_vectors_ = unpack_directions(scene_.photons.caustic);
         scene_.photons.global.unpacked = global_vectors_.empty() ? nullptr : global_vectors_.data();

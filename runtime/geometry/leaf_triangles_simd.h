@@ -6,6 +6,7 @@
 // lanes' verdicts are read. The results are the scalar loop's bit for bit: the closest hit is
 // the lowest t, the first of the leaf's order among equal t (the scalar loop replaces a hit only
 // with a strictly nearer one), with that triangle's u and v.
+#include <cstddef>
 #include <cstdint>
 
 #include "runtime/geometry/geometry_view.h"
@@ -28,8 +29,13 @@ struct Lanes4 {
     alignas(16) float t[4], u[4], v[4];
 };
 
+// The transposes below read a TriangleRecord as three rows of four: (v0, material), (e1, source),
+// (e2, flags).
+static_assert(offsetof(TriangleRecord, v0) == 0 && offsetof(TriangleRecord, e1) == 16 &&
+                  offsetof(TriangleRecord, e2) == 32 && sizeof(TriangleRecord) == 48,
+              "leaf_triangles_simd.h loads TriangleRecord rows of four floats");
+
 inline void intersect4(const TriangleRecord* const a[4], const Ray& ray, float tmax, Lanes4& out) {
-    // TriangleRecord is three rows of four: (v0, material), (e1, source), (e2, flags).
     const float* r0 = reinterpret_cast<const float*>(a[0]);
     const float* r1 = reinterpret_cast<const float*>(a[1]);
     const float* r2 = reinterpret_cast<const float*>(a[2]);

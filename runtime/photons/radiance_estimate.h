@@ -91,7 +91,10 @@ struct SurfacePhotonFilter {
     }
 
     KDPM_HD bool exact(std::uint32_t p) const {
-        if (unpacked) return exact_from(unpacked + 6 * static_cast<std::uint64_t>(p), unpacked + 6 * static_cast<std::uint64_t>(p) + 3);
+        if (unpacked) {
+            const float* v = unpacked + 6 * static_cast<std::uint64_t>(p);  // direction, then normal
+            return exact_from(v, v + 3);
+        }
         float d[3], nn[3];
         decode_octahedral(directions[p].direction, d);
         if (d[0] * normal.x + d[1] * normal.y + d[2] * normal.z >= 0.0f) return false;  // from behind

@@ -8,6 +8,7 @@
 // or DiscMetric, which flattens the search sphere toward a surface against light leaks.
 // Accept: photon index -> bool, a filter applied to photons inside the current radius.
 #include <cassert>
+#include <concepts>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -15,6 +16,10 @@
 #include "formats/host_device.h"
 #include "runtime/photons/knn_best.h"
 #include "runtime/photons/photon_map_view.h"
+
+#if defined(__SSE2__) && !defined(__CUDA_ARCH__)
+#include <xmmintrin.h>
+#endif
 
 namespace kdpm {
 
@@ -37,6 +42,15 @@ struct AcceptAll {
     KDPM_HD bool operator()(std::uint32_t) const { return true; }
 };
 
+// An Accept that can also decide 16 consecutive photons at once (CPU leaf scans):
+// accepted16(base) has bit j set when accept(base + j) holds (asked only where base + 16 <=
+// photon_count), used while batched() says so.
+template <class Accept>
+concept AcceptsSixteen = requires(const Accept& a, std::uint32_t base) {
+    { a.batched() } -> std::convertible_to<bool>;
+    { a.accepted16(base) } -> std::convertible_to<std::uint32_t>;
+};
+
 namespace knn_detail {
 
 // Squared metric distances of m photons (coordinate arrays x, y, z) from q, into out[0..m).
@@ -45,6 +59,20 @@ template <class Metric>
 KDPM_HD KDPM_INLINE void leaf_distances(const float* x, const float* y, const float* z, std::uint32_t m, glm::vec3 q,
                                         const Metric& metric, float* out) {
     for (std::uint32_t j = 0; j < m; ++j) out[j] = metric(x[j] - q.x, y[j] - q.y, z[j] - q.z);
+}
+
+// Bit j set when d2[j] < max_d2, for the distances of a leaf chunk (AcceptsSixteen's width).
+static_assert(kLeafChunk == 16, "accepted16 masks and closer_than masks must cover one chunk");
+KDPM_HD KDPM_INLINE std::uint32_t closer_than(const float* d2, float max_d2) {
+    std::uint32_t mask = 0;
+#if defined(__SSE2__) && !defined(__CUDA_ARCH__)
+    const __m128 limit = _mm_set1_ps(max_d2);
+    for (std::uint32_t i = 0; i < kLeafChunk; i += 4)
+        mask |= static_cast<std::uint32_t>(_mm_movemask_ps(_mm_cmplt_ps(_mm_loadu_ps(d2 + i), limit))) << i;
+#else
+    for (std::uint32_t i = 0; i < kLeafChunk; ++i) mask |= static_cast<std::uint32_t>(d2[i] < max_d2) << i;
+#endif
+    return mask;
 }
 
 }  // namespace knn_detail
@@ -107,9 +135,9 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             n = map.nodes[node];
         }
         const std::uint32_t first = n.first(), end = first + n.count();
-        // Photons in leaf order, each kept when closer than the current radius and accepted.
-        auto consider = [&](std::uint32_t p, float d2) {
-            if (d2 < max_d2 && acc(p)) {
+        // An accepted photon, kept when (still) closer than the current radius.
+        auto keep = [&](std::uint32_t p, float d2) {
+            if (d2 < max_d2) {
                 if (best.full()) {
                     best.replace_farthest(d2, p);
                     max_d2 = best.farthest();
@@ -118,6 +146,10 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                 }
             }
         };
+        // Photons in leaf order, each kept when closer than the current radius and accepted.
+        auto consider = [&](std::uint32_t p, float d2) {
+            if (d2 < max_d2 && acc(p)) keep(p, d2);
+        };
 #if defined(__CUDA_ARCH__)
         for (std::uint32_t p = first; p < end; ++p)
             consider(p, dist(map.x[p] - q.x, map.y[p] - q.y, map.z[p] - q.z));
@@ -125,15 +157,33 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
         // On the CPU, the distances of a chunk of the leaf first, in a branch-free loop over the
         // coordinate arrays that the compiler vectorises; each is the same float expression as
         // the scalar one, and the photons are then considered in the same order.
+        bool batched = false;
+        if constexpr (AcceptsSixteen<Accept>) batched = acc.batched();
         for (std::uint32_t base = first; base < end; base += knn_detail::kLeafChunk) {
             const std::uint32_t m = end - base < knn_detail::kLeafChunk ? end - base : knn_detail::kLeafChunk;
             float d2[knn_detail::kLeafChunk];
             // A whole chunk where the arrays go on that far: a fixed trip count, no epilogue
             // branches; the distances past the leaf's end are not looked at.
-            if (base + knn_detail::kLeafChunk <= map.photon_count)
+            const bool whole = base + knn_detail::kLeafChunk <= map.photon_count;
+            if (whole)
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, knn_detail::kLeafChunk, q, dist, d2);
             else
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
+            if constexpr (AcceptsSixteen<Accept>) {
+                // Only the photons inside the radius and accepted, found from two bit masks:
+                // about half of those inside fail a surface filter, and a branch per photon on
+                // "inside and accepted" mispredicts often. Still in leaf order.
+                if (batched && whole) {
+                    std::uint32_t todo = acc.accepted16(base) & knn_detail::closer_than(d2, max_d2) &
+                                         (0xffffu >> (knn_detail::kLeafChunk - m));
+                    while (todo != 0) {
+                        const std::uint32_t j = static_cast<std::uint32_t>(__builtin_ctz(todo));
+                        todo &= todo - 1;
+                        keep(base + j, d2[j]);
+                    }
+                    continue;
+                }
+            }
             for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
         }
 #endif

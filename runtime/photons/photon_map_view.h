@@ -18,8 +18,10 @@ struct PhotonMapView {
     const std::uint32_t* power = nullptr;                // RGBE (decode_rgbe)
     const PackedPhotonDirections* directions = nullptr;  // octahedral (decode_octahedral)
     const std::uint32_t* flags = nullptr;                // kPhotonCaustic, bounce
-    // CPU only, may be null: 6 floats a photon, decode_octahedral of its direction and of its
-    // surface normal, decoded once for many searches (unpack_directions); null: decoded per use.
+    // CPU only, may be null: decode_octahedral of each photon's direction and of its surface
+    // normal, decoded once for many searches (unpack_directions), as 6 arrays of photon_count
+    // floats (direction x, y, z, normal x, y, z: component c of photon p at
+    // unpacked[c * photon_count + p]) that SIMD lanes load; null: decoded per use.
     const float* unpacked = nullptr;
     std::uint64_t emitted_count = 0;                     // photon paths emitted by the shooter
 };

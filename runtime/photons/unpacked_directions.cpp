@@ -6,10 +6,16 @@
 namespace kdpm {
 
 std::vector<float> unpack_directions(const PhotonMapView& map) {
-    std::vector<float> out(6 * static_cast<std::size_t>(map.photon_count));
-    cpu_parallel_for(map.photon_count, [&](std::uint64_t p) {
-        decode_octahedral(map.directions[p].direction, &out[6 * p]);
-        decode_octahedral(map.directions[p].normal, &out[6 * p + 3]);
+    const std::size_t n = map.photon_count;
+    std::vector<float> out(6 * n);
+    cpu_parallel_for(n, [&](std::uint64_t p) {
+        float d[3], s[3];
+        decode_octahedral(map.directions[p].direction, d);
+        decode_octahedral(map.directions[p].normal, s);
+        for (std::size_t c = 0; c < 3; ++c) {
+            out[c * n + p] = d[c];
+            out[(3 + c) * n + p] = s[c];
+        }
     }, 4096);
     return out;
 }

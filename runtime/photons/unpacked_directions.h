@@ -9,7 +9,8 @@
 
 namespace kdpm {
 
-// 6 floats a photon: decode_octahedral of its direction, then of its surface normal (parallel).
+// PhotonMapView::unpacked's arrays for `map`: decode_octahedral of every photon's direction, then
+// of its surface normal, component by component (parallel).
 std::vector<float> unpack_directions(const PhotonMapView& map);
 
 }  // namespace kdpm

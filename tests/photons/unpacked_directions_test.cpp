@@ -40,8 +40,11 @@ TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]
         float d[3], n[3];
         decode_octahedral(map.directions[p].direction, d);
         decode_octahedral(map.directions[p].normal, n);
-        REQUIRE(std::memcmp(d, &v[6 * p], sizeof d) == 0);
-        REQUIRE(std::memcmp(n, &v[6 * p + 3], sizeof n) == 0);
+        const std::size_t count = map.photon_count;
+        for (std::size_t c = 0; c < 3; ++c) {
+            REQUIRE(std::memcmp(&d[c], &v[c * count + p], sizeof(float)) == 0);
+            REQUIRE(std::memcmp(&n[c], &v[(3 + c) * count + p], sizeof(float)) == 0);
+        }
     }
     PhotonMapView empty;
     CHECK(unpack_directions(empty).empty());
@@ -71,6 +74,31 @@ TEST_CASE("The surface filter decides alike from decoded and from packed vectors
                 }
             }
     CHECK(accepted > asked / 10);  // both verdicts occur
+    CHECK(accepted < asked);
+}
+
+TEST_CASE("Sixteen decisions at once are the sixteen single ones", "[photons][unpacked]") {
+    const BothViews views(5000, 61);
+    const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
+    const glm::vec3 normals[] = {{0, 1, 0}, {0.6f, 0.8f, 0.0f}, {0, 0, -1}, {0.3f, 0.3f, 0.3f}};
+    std::uint64_t accepted = 0, asked = 0;
+    for (const glm::vec3& n : normals)
+        for (float c : {-1.0f, 0.7f, 0.01f})
+            for (std::uint32_t min_bounce : {0u, 1u})
+                for (std::uint32_t exclude : {0u, kPhotonCaustic}) {
+                    const SurfacePhotonFilter single(packed, n, c, min_bounce, exclude),
+                        batch(unpacked, n, c, min_bounce, exclude);
+                    REQUIRE(batch.batched());
+                    REQUIRE_FALSE(single.batched());
+                    for (std::uint32_t base = 0; base + 16 <= packed.photon_count; base += 7) {
+                        std::uint32_t want = 0;
+                        for (std::uint32_t j = 0; j < 16; ++j) want |= static_cast<std::uint32_t>(single(base + j)) << j;
+                        REQUIRE(batch.accepted16(base) == want);
+                        accepted += static_cast<std::uint64_t>(__builtin_popcount(want));
+                        asked += 16;
+                    }
+                }
+    CHECK(accepted > asked / 10);
     CHECK(accepted < asked);
 }
 

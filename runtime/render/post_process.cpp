@@ -75,9 +75,13 @@ void add_bloom(Image& img, const PostSettings& s) {
 }  // namespace
 
 Image expose(const Image& linear, const PostSettings& s) {
-    Image out = linear;
+    Image out(linear.width, linear.height);
+    out.rgb.resize(linear.rgb.size());
     const float scale = std::exp2(s.exposure_stops);
-    for (float& v : out.rgb) v = std::isfinite(v) ? v * scale : 0.0f;
+    cpu_parallel_for(linear.rgb.size(), [&](std::uint64_t i) {
+        const float v = linear.rgb[i];
+        out.rgb[i] = std::isfinite(v) ? v * scale : 0.0f;
+    }, 16384);
     if (s.bloom && out.width > 0 && out.height > 0) add_bloom(out, s);
     return out;
 }

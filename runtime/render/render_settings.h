@@ -62,6 +62,7 @@ struct RenderResult {
     Image linear;   // radiance, before exposure
     Image exposed;  // exposure and bloom applied (what EXR files get)
     Image display;  // tone-mapped sRGB in [0, 1] (what PNG files get)
+    PostSettings post;  // what exposed and display were made with
     AovImages aovs;
     StageTimes times;
 };

@@ -196,6 +196,7 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     StopWatch watch;
     result.exposed = expose(result.linear, settings.post);
     result.display = to_display(result.exposed, settings.post.tone_map);
+    result.post = settings.post;
     result.times.post_ms += watch.lap_ms();
     return result;
 }

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "runtime/backend/cpu_parallel_for.h"
+
 
 namespace kdpm {
 
@@ -95,6 +97,13 @@ Image compose_view(const RenderResult& frame, const std::vector<float>& density,
     PostSettings post;
     post.exposure_stops = options.exposure_stops;
     post.tone_map = options.tone_map;
+    // The renderer made this very image already when the frame was rendered with the view's
+    // settings (the viewer asks for them); recomposed only when they changed since.
+    const PostSettings& made = frame.post;
+    if (!made.bloom && made.exposure_stops == post.exposure_stops && made.tone_map == post.tone_map &&
+        frame.display.width == frame.linear.width && frame.display.height == frame.linear.height &&
+        frame.display.rgb.size() == frame.linear.rgb.size())
+        return frame.display;
     return to_display(expose(frame.linear, post), post.tone_map);
 }
 
@@ -118,10 +127,10 @@ Image resize_nearest(const Image& source, int width, int height) {
 
 void to_rgb8(const Image& image, std::vector<unsigned char>& out) {
     out.resize(image.rgb.size());
-    for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    cpu_parallel_for(image.rgb.size(), [&](std::uint64_t i) {
         const float v = std::isfinite(image.rgb[i]) ? std::clamp(image.rgb[i], 0.0f, 1.0f) : 0.0f;
         out[i] = static_cast<unsigned char>(std::lround(v * 255.0f));
-    }
+    }, 16384);
 }
 
 }  // namespace kdpm

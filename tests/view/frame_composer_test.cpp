@@ -31,6 +31,34 @@ TEST_CASE("frame composer shaded view equals kdpm-render's post-processing", "[v
     CHECK(compose_view(r, {}, o).rgb == to_display(expose(r.linear, post), ToneMap::reinhard).rgb);
 }
 
+TEST_CASE("frame composer shows the renderer's own display image when made with the view's settings",
+          "[view][composer]") {
+    RenderResult r = two_pixel_frame();
+    r.post.exposure_stops = 1.0f;
+    r.post.tone_map = ToneMap::reinhard;
+    r.exposed = expose(r.linear, r.post);
+    r.display = to_display(r.exposed, r.post.tone_map);
+    ViewOptions o;
+    o.exposure_stops = 1.0f;
+    o.tone_map = ToneMap::reinhard;
+    CHECK(compose_view(r, {}, o).rgb == r.display.rgb);
+    // Marked, to tell a reuse from a recomposition: reused while the settings agree...
+    r.display.rgb[0] = 0.25f;
+    CHECK(compose_view(r, {}, o).rgb[0] == 0.25f);
+    // ...recomposed from the radiance once the view's exposure or tone map differ, or with bloom.
+    o.exposure_stops = 2.0f;
+    PostSettings now;
+    now.exposure_stops = 2.0f;
+    now.tone_map = ToneMap::reinhard;
+    CHECK(compose_view(r, {}, o).rgb == to_display(expose(r.linear, now), ToneMap::reinhard).rgb);
+    o.exposure_stops = 1.0f;
+    o.tone_map = ToneMap::aces;
+    CHECK(compose_view(r, {}, o).rgb[0] != 0.25f);
+    o.tone_map = ToneMap::reinhard;
+    r.post.bloom = true;
+    CHECK(compose_view(r, {}, o).rgb[0] != 0.25f);
+}
+
 TEST_CASE("frame composer depth and normal views", "[view][composer]") {
     RenderResult r = two_pixel_frame();
     ViewOptions o;

@@ -23,7 +23,7 @@ struct CachedGatherPass {
         const std::uint32_t count = frame.vertex_count[pixel];
         KnnHeap heap;
         for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
-            const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+            const std::uint64_t slot = frame.vertex_slot(pixel, i);
             const DiffuseVertex& v = frame.vertices[slot];
             glm::vec3 irradiance(0.0f);
             if (!cache.interpolate(v.position, v.geometric_normal, irradiance)) {

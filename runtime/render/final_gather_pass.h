@@ -58,7 +58,7 @@ struct FinalGatherPass {
 
     // Caustics plus the gather rays' indirect light at the pixel's vertex i, into frame.gathered.
     KDPM_HD void gather_vertex(std::uint64_t pixel, std::uint32_t i, KnnHeap& heap) const {
-        const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+        const std::uint64_t slot = frame.vertex_slot(pixel, i);
         const DiffuseVertex& v = frame.vertices[slot];
         glm::vec3 l(0.0f);
         if (maps.caustic.node_count > 0)

@@ -5,6 +5,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "formats/host_device.h"
+
 namespace kdpm {
 
 // Diffuse surfaces a camera sample reaches directly or through mirrors and glass. Glass splits
@@ -24,14 +26,27 @@ struct FrameBuffersView {
     std::uint32_t width = 0, height = 0;
     glm::vec3* emitted = nullptr;            // per pixel: emitters seen by this sample's rays
     std::uint32_t* vertex_count = nullptr;   // per pixel
-    DiffuseVertex* vertices = nullptr;       // per pixel * kMaxDiffuseVertices
-    glm::vec3* gathered = nullptr;           // per vertex: radiance from the photon maps
+    DiffuseVertex* vertices = nullptr;       // kMaxDiffuseVertices per pixel, at vertex_slot
+    glm::vec3* gathered = nullptr;           // per vertex slot: radiance from the photon maps
     glm::vec3* accum = nullptr;              // per pixel: sum over samples
     // AOVs of the first sample's first hit; each may be null when not asked for.
     float* depth = nullptr;
     glm::vec3* normal = nullptr;
     glm::vec3* position = nullptr;
     std::int32_t* triangle = nullptr;
+
+    // Where a pixel's vertex i (< kMaxDiffuseVertices) lives in vertices and gathered: all first
+    // vertices, then all second ones, and so on. Nearly every pixel has just a first vertex, and
+    // neighbouring pixels' then share cache lines; with a pixel's slots together, each pixel's
+    // first vertex was a cache miss of its own (a third of the CPU trace pass went to them).
+    KDPM_HD std::uint64_t vertex_slot(std::uint64_t pixel, std::uint32_t i) const {
+        return static_cast<std::uint64_t>(i) * pixel_count() + pixel;
+    }
+    KDPM_HD std::uint64_t slot_pixel(std::uint64_t slot) const { return slot % pixel_count(); }
+    KDPM_HD std::uint32_t slot_vertex(std::uint64_t slot) const {
+        return static_cast<std::uint32_t>(slot / pixel_count());
+    }
+    KDPM_HD std::uint64_t pixel_count() const { return static_cast<std::uint64_t>(width) * height; }
 };
 
 }  // namespace kdpm

@@ -21,7 +21,7 @@ void run_cached_gather(CpuDevice& dev, IrradianceCache& cache, const FinalGather
                 const std::uint64_t pixel = static_cast<std::uint64_t>(y) * w + x;
                 const std::uint32_t count = frame.vertex_count[pixel];
                 for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i)
-                    candidates.push_back(pixel * kMaxDiffuseVertices + i);
+                    candidates.push_back(frame.vertex_slot(pixel, i));
             }
         std::vector<unsigned char> uncovered(candidates.size());
         const IrradianceTreeView view = cache.tree.view();

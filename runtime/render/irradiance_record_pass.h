@@ -40,8 +40,8 @@ struct IrradianceRecordPass {
     KDPM_HD void operator()(std::uint64_t item) const {
         const std::uint64_t slot = slots[item];
         const DiffuseVertex& v = gather.frame.vertices[slot];
-        const std::uint64_t pixel = slot / kMaxDiffuseVertices;
-        const std::uint32_t vertex = static_cast<std::uint32_t>(slot % kMaxDiffuseVertices);
+        const std::uint64_t pixel = gather.frame.slot_pixel(slot);
+        const std::uint32_t vertex = gather.frame.slot_vertex(slot);
         const std::uint64_t path = (pixel << 32) | gather.sample;
         std::uint32_t rows = 1, columns = 1;
         record_strata(gather.gather_rays, rows, columns);

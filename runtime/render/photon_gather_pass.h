@@ -54,7 +54,7 @@ struct PhotonGatherPass {
     KDPM_HD void gather_pixel(std::uint64_t pixel, KnnHeap& heap, const Estimate& estimate) const {
         const std::uint32_t count = frame.vertex_count[pixel];
         for (std::uint32_t i = 0; i < count && i < kMaxDiffuseVertices; ++i) {
-            const std::uint64_t slot = pixel * kMaxDiffuseVertices + i;
+            const std::uint64_t slot = frame.vertex_slot(pixel, i);
             const DiffuseVertex& v = frame.vertices[slot];
             glm::vec3 l = estimate(maps.global, false, v, i, global_params, heap);
             if (use_caustic_map && maps.caustic.node_count > 0)

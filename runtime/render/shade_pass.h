@@ -30,7 +30,7 @@ struct ShadePass {
         glm::vec3 radiance = frame.emitted[pixel];
         const std::uint32_t count = frame.vertex_count[pixel];
         for (std::uint32_t v = 0; v < count; ++v) {
-            const std::uint64_t slot = pixel * kMaxDiffuseVertices + v;
+            const std::uint64_t slot = frame.vertex_slot(pixel, v);
             const DiffuseVertex& d = frame.vertices[slot];
             glm::vec3 l(0.0f);
             if (direct) {

@@ -103,7 +103,7 @@ struct TracePass {
                     stack[sp++] = Pending{below, refracted, r.throughput * (1.0f - f) * to_vec3(m.transmission),
                                           r.depth + 1};
             } else if (count < kMaxDiffuseVertices) {
-                frame.vertices[pixel * kMaxDiffuseVertices + count] =
+                frame.vertices[frame.vertex_slot(pixel, count)] =
                     DiffuseVertex{s.position, s.shading_normal, s.geometric_normal, to_vec3(m.diffuse), r.throughput};
                 ++count;
             }

@@ -57,7 +57,7 @@ TEST_CASE("The tile gather estimates what the per-pixel gather does", "[render][
     float sum = 0.0f;
     for (std::uint64_t p = 0; p < pixels; ++p)
         for (std::uint32_t i = 0; i < vertex_count[p]; ++i) {
-            const std::uint64_t slot = p * kMaxDiffuseVertices + i;
+            const std::uint64_t slot = fb.vertex_slot(p, i);
             INFO("pixel " << p % width << "," << p / width << " vertex " << i);
             for (int c = 0; c < 3; ++c) REQUIRE(by_tile[slot][c] == Approx(per_pixel[slot][c]).epsilon(1e-5));
             sum += per_pixel[slot].x;

@@ -22,13 +22,14 @@
 namespace kdpm {
 
 // The AOVs of a pixel's first hit, written by its first sample (each buffer may be null).
+// `known`: the hit's surface point when the caller has it already, else null.
 KDPM_HD KDPM_INLINE void write_first_hit_aovs(const GeometryView& geometry, const FrameBuffersView& frame,
                                               std::uint32_t sample, std::uint64_t pixel, const Ray& ray,
-                                              const Hit& hit) {
+                                              const Hit& hit, const SurfacePoint* known = nullptr) {
     if (sample != 0) return;
     const bool found = hit.found();
     SurfacePoint s{};
-    if (found && (frame.normal || frame.position)) s = surface_at(geometry, ray, hit);  // only if asked for
+    if (found && (frame.normal || frame.position)) s = known ? *known : surface_at(geometry, ray, hit);  // if asked for
     if (frame.depth) frame.depth[pixel] = found ? hit.t : std::numeric_limits<float>::infinity();
     if (frame.normal) frame.normal[pixel] = found ? s.geometric_normal : glm::vec3(0.0f);
     if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);
@@ -77,9 +78,12 @@ struct TracePass {
             }
             const Ray ray{r.origin, 0.0f, r.direction, std::numeric_limits<float>::infinity()};
             const Hit hit = first && camera_hit ? *camera_hit : closest_hit(geometry, ray);
-            if (first) write_aovs(pixel, ray, hit);
-            if (!hit.found()) continue;
+            if (!hit.found()) {
+                if (first) write_aovs(pixel, ray, hit, nullptr);
+                continue;
+            }
             const SurfacePoint s = surface_at(geometry, ray, hit);
+            if (first) write_aovs(pixel, ray, hit, &s);
             // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
             const float footprint = r.depth == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
             const MaterialRecord m = material_of(geometry, hit, footprint);
@@ -112,8 +116,8 @@ struct TracePass {
         frame.vertex_count[pixel] = count;
     }
 
-    KDPM_HD void write_aovs(std::uint64_t pixel, const Ray& ray, const Hit& hit) const {
-        write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit);
+    KDPM_HD void write_aovs(std::uint64_t pixel, const Ray& ray, const Hit& hit, const SurfacePoint* s) const {
+        write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit, s);
     }
 };
 

@@ -107,7 +107,7 @@ Image compose_view(const RenderResult& frame, const std::vector<float>& density,
     return to_display(expose(frame.linear, post), post.tone_map);
 }
 
-Image resize_nearest(const Image& source, int width, int height) {
+Image resize_nearest(Image source, int width, int height) {
     if (source.width == width && source.height == height) return source;
     Image out(width, height);
     if (source.width <= 0 || source.height <= 0) return out;
@@ -129,7 +129,11 @@ void to_rgb8(const Image& image, std::vector<unsigned char>& out) {
     out.resize(image.rgb.size());
     cpu_parallel_for(image.rgb.size(), [&](std::uint64_t i) {
         const float v = std::isfinite(image.rgb[i]) ? std::clamp(image.rgb[i], 0.0f, 1.0f) : 0.0f;
-        out[i] = static_cast<unsigned char>(std::lround(v * 255.0f));
+        // lround(x) for x in [0, 255] without the libm call: a float's fraction x - trunc(x) is
+        // exact, so the halfway case rounds up as lround's does.
+        const float x = v * 255.0f;
+        const int whole = static_cast<int>(x);
+        out[i] = static_cast<unsigned char>(whole + (x - static_cast<float>(whole) >= 0.5f ? 1 : 0));
     }, 16384);
 }
 

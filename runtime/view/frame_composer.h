@@ -18,7 +18,8 @@ namespace kdpm {
 Image compose_view(const RenderResult& frame, const std::vector<float>& density, const ViewOptions& options);
 
 // Nearest-neighbour resize (previews are shown blocky rather than blurred: it reads as "not final").
-Image resize_nearest(const Image& source, int width, int height);
+// `source` itself (moved, not copied) when it has that size already.
+Image resize_nearest(Image source, int width, int height);
 
 // The density view's colour scale: natural logs of the densities shown at its dark and bright
 // ends (the frame's 1st and 99th percentiles). valid is false when nothing has a density.

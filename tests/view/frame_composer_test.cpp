@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "runtime/view/frame_composer.h"
@@ -91,6 +92,31 @@ TEST_CASE("frame composer scales previews by pixel replication and rounds to 8 b
     CHECK(bytes == std::vector<unsigned char>{0, 128, 0});
     CHECK(heat_color(0.0f) == glm::vec3(0.0f));
     CHECK(heat_color(1.0f) == glm::vec3(1.0f));
+}
+
+TEST_CASE("8-bit conversion rounds as lround does, halfway cases included", "[view][composer]") {
+    // Every float in [0, 1] with the low 8 mantissa bits clear, plus the values nearest each
+    // halfway point k + 0.5 of the 255 steps.
+    Image values(1, 1);
+    values.rgb.clear();
+    for (std::uint32_t bits = 0; bits <= 0x3f800000u; bits += 256) {
+        float v;
+        std::memcpy(&v, &bits, sizeof v);
+        values.rgb.push_back(v);
+    }
+    for (int k = 0; k < 255; ++k) {
+        const float half = (static_cast<float>(k) + 0.5f) / 255.0f;
+        for (float v : {std::nextafter(half, 0.0f), half, std::nextafter(half, 1.0f)}) values.rgb.push_back(v);
+    }
+    while (values.rgb.size() % 3 != 0) values.rgb.push_back(1.0f);
+    values.width = static_cast<int>(values.rgb.size() / 3);
+    std::vector<unsigned char> bytes;
+    to_rgb8(values, bytes);
+    REQUIRE(bytes.size() == values.rgb.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        differ += bytes[i] != static_cast<unsigned char>(std::lround(values.rgb[i] * 255.0f));
+    CHECK(differ == 0);
 }
 
 TEST_CASE("density legend scale spans the shown frame's 1st to 99th percentile", "[view][composer]") {

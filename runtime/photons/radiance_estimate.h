@@ -283,10 +283,11 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     const float r = sqrtf(r2);
     const float cone_k = params.cone_k < 1.0f ? 1.0f : params.cone_k;
     glm::vec3 flux(0.0f);
-    for (std::uint32_t i = 0; i < found; ++i) {
-        const glm::vec3 pw = photon_power(map.power[heap.index[i]]);
-        const float w = params.cone_filter ? cone_weight(sqrtf(heap.d2[i]), cone_k, r) : 1.0f;
-        flux += w * pw;
+    if (params.cone_filter) {
+        for (std::uint32_t i = 0; i < found; ++i)
+            flux += cone_weight(sqrtf(heap.d2[i]), cone_k, r) * photon_power(map.power[heap.index[i]]);
+    } else {
+        for (std::uint32_t i = 0; i < found; ++i) flux += photon_power(map.power[heap.index[i]]);  // w = 1
     }
     const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
     out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);

@@ -11,6 +11,10 @@
 
 #include "formats/host_device.h"
 
+#if defined(__SSE2__) && !defined(__CUDA_ARCH__)
+#include <xmmintrin.h>
+#endif
+
 namespace kdpm {
 
 struct RadiusHints {
@@ -20,6 +24,22 @@ struct RadiusHints {
 
     // 0 (no hint) until a query has been remembered.
     KDPM_HD float hint(glm::vec3 q) const {
+#if defined(__SSE2__) && !defined(__CUDA_ARCH__)
+        // The same bounds four at a time (one square root instruction for four), once full.
+        if (count == kRemembered) {
+            const __m128 qx = _mm_set1_ps(q.x), qy = _mm_set1_ps(q.y), qz = _mm_set1_ps(q.z);
+            __m128 least = _mm_set1_ps(3.402823466e38f);
+            for (std::uint32_t i = 0; i < kRemembered; i += 4) {
+                const __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(px + i)), dy = _mm_sub_ps(qy, _mm_loadu_ps(py + i)),
+                             dz = _mm_sub_ps(qz, _mm_loadu_ps(pz + i));
+                const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+                least = _mm_min_ps(least, _mm_add_ps(_mm_loadu_ps(radius + i), _mm_sqrt_ps(d2)));
+            }
+            least = _mm_min_ps(least, _mm_shuffle_ps(least, least, _MM_SHUFFLE(1, 0, 3, 2)));
+            least = _mm_min_ps(least, _mm_shuffle_ps(least, least, _MM_SHUFFLE(2, 3, 0, 1)));
+            return _mm_cvtss_f32(least);
+        }
+#endif
         float best = 0.0f;
         for (std::uint32_t i = 0; i < count; ++i) {
             const float dx = q.x - px[i], dy = q.y - py[i], dz = q.z - pz[i];

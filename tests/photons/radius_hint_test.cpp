@@ -46,6 +46,20 @@ TEST_CASE("A query's k-th distance plus the distance to a nearby point bounds th
     CHECK(hints.hint(glm::vec3(0.0f)) == Approx(1.1f));  // (0,0,0) gone, (1,0,0) kept
     hints.remember(glm::vec3(5.0f), 1.0f);
     CHECK(hints.hint(glm::vec3(0.0f)) == Approx(1.0f + std::sqrt(75.0f)));
+    // A full set (the CPU's four-wide path) gives the very float of a one-by-one minimum.
+    RadiusHints full;
+    for (std::uint32_t i = 0; i < RadiusHints::kRemembered; ++i)
+        full.remember(glm::vec3(u(rng), u(rng), u(rng)), 0.2f * u(rng));
+    for (int i = 0; i < 500; ++i) {
+        const glm::vec3 q(u(rng), u(rng), u(rng));
+        float least = 0.0f;
+        for (std::uint32_t j = 0; j < RadiusHints::kRemembered; ++j) {
+            const float dx = q.x - full.px[j], dy = q.y - full.py[j], dz = q.z - full.pz[j];
+            const float bound = full.radius[j] + std::sqrt(dx * dx + dy * dy + dz * dz);
+            least = j == 0 || bound < least ? bound : least;
+        }
+        REQUIRE(full.hint(q) == least);
+    }
 }
 
 TEST_CASE("An estimate started from any radius hint equals the estimate without one", "[photons][hints]") {

@@ -12,6 +12,7 @@
 
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
+#include "runtime/backend/items_on_host.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/photons/photon_path.h"
 #include "runtime/shading/area_light.h"
@@ -40,18 +41,6 @@ struct ShootPathsPass {
 inline std::uint64_t shoot_batch_size(std::uint32_t max_bounces, std::uint64_t preferred, std::uint64_t max_bytes) {
     const std::uint64_t per_path = (static_cast<std::uint64_t>(max_bounces) + 1) * sizeof(PhotonHit);
     return std::max<std::uint64_t>(1024, std::min(preferred, max_bytes / per_path));
-}
-
-// The items of `a` readable on the host: `a` itself on a device whose arrays are host memory
-// (CpuDevice), else a copy in `buffer`.
-template <class Device, class Array, class T>
-const T* items_on_host(Device& dev, const Array& a, std::vector<T>& buffer) {
-    if constexpr (requires { requires Device::arrays_on_host; }) {
-        return a.data();
-    } else {
-        dev.to_host(a, buffer);
-        return buffer.data();
-    }
 }
 
 // Paths first_path .. end_path - 1 (a shard, or all). geometry and lights hold arrays where `dev`

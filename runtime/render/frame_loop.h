@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "runtime/backend/items_on_host.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
@@ -128,8 +129,8 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     times.cache_points = cache.points - points_before;
     times.cache_records_kept = records_before;
 
-    std::vector<glm::vec3> sums;
-    dev.to_host(accum, sums);
+    std::vector<glm::vec3> copied;  // only where the device's arrays are not host memory
+    const glm::vec3* sums = items_on_host(dev, accum, copied);
     linear = Image(static_cast<int>(plan.width), static_cast<int>(plan.height));
     const float inv_spp = 1.0f / static_cast<float>(spp);
     for (std::uint64_t i = 0; i < pixels; ++i)

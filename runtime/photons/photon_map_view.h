@@ -23,6 +23,9 @@ struct PhotonMapView {
     // floats (direction x, y, z, normal x, y, z: component c of photon p at
     // unpacked[c * photon_count + p]) that SIMD lanes load; null: decoded per use.
     const float* unpacked = nullptr;
+    // CPU only, may be null: each photon's power as photon_power decodes it, 3 floats a photon
+    // (unpack_powers); null: decoded per use.
+    const float* unpacked_power = nullptr;
     std::uint64_t emitted_count = 0;                     // photon paths emitted by the shooter
 };
 

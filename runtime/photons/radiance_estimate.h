@@ -206,6 +206,15 @@ KDPM_HD KDPM_INLINE glm::vec3 photon_power(std::uint32_t rgbe) {
                      static_cast<float>((rgbe >> 16) & 0xffu) * scale);
 }
 
+// Photon p's power: decoded once already (PhotonMapView::unpacked_power, the same floats) or now.
+KDPM_HD KDPM_INLINE glm::vec3 power_of(const PhotonMapView& map, std::uint32_t p) {
+    if (map.unpacked_power) {
+        const float* v = map.unpacked_power + 3 * static_cast<std::uint64_t>(p);
+        return glm::vec3(v[0], v[1], v[2]);
+    }
+    return photon_power(map.power[p]);
+}
+
 // The cone filter's weight of a photon at distance d in a disc of radius r, and its normalisation.
 KDPM_HD KDPM_INLINE float cone_weight(float d, float cone_k, float r) {
     const float w = 1.0f - d / (cone_k * r);
@@ -226,7 +235,7 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
     radius_search(map, position, r, [&](std::uint32_t p, float d2) {
         if (!filter(p)) return;
         const float w = params.cone_filter ? cone_weight(sqrtf(d2), cone_k, r) : 1.0f;
-        flux += w * photon_power(map.power[p]);
+        flux += w * power_of(map, p);
         ++count;
     });
     out.count = count;
@@ -285,9 +294,14 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     glm::vec3 flux(0.0f);
     if (params.cone_filter) {
         for (std::uint32_t i = 0; i < found; ++i)
-            flux += cone_weight(sqrtf(heap.d2[i]), cone_k, r) * photon_power(map.power[heap.index[i]]);
+            flux += cone_weight(sqrtf(heap.d2[i]), cone_k, r) * power_of(map, heap.index[i]);
+    } else if (map.unpacked_power) {  // w = 1; the powers decoded already
+        for (std::uint32_t i = 0; i < found; ++i) {
+            const float* v = map.unpacked_power + 3 * static_cast<std::uint64_t>(heap.index[i]);
+            flux += glm::vec3(v[0], v[1], v[2]);
+        }
     } else {
-        for (std::uint32_t i = 0; i < found; ++i) flux += photon_power(map.power[heap.index[i]]);  // w = 1
+        for (std::uint32_t i = 0; i < found; ++i) flux += photon_power(map.power[heap.index[i]]);
     }
     const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
     out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);

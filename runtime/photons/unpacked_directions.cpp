@@ -1,6 +1,7 @@
 #include "runtime/photons/unpacked_directions.h"
 
 #include "formats/photon_layout.h"
+#include "runtime/photons/radiance_estimate.h"
 #include "runtime/backend/cpu_parallel_for.h"
 
 namespace kdpm {
@@ -16,6 +17,17 @@ std::vector<float> unpack_directions(const PhotonMapView& map) {
             out[c * n + p] = d[c];
             out[(3 + c) * n + p] = s[c];
         }
+    }, 4096);
+    return out;
+}
+
+std::vector<float> unpack_powers(const PhotonMapView& map) {
+    std::vector<float> out(3 * static_cast<std::size_t>(map.photon_count));
+    cpu_parallel_for(map.photon_count, [&](std::uint64_t p) {
+        const glm::vec3 power = photon_power(map.power[p]);
+        out[3 * p] = power.x;
+        out[3 * p + 1] = power.y;
+        out[3 * p + 2] = power.z;
     }, 4096);
     return out;
 }

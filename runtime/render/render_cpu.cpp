@@ -32,27 +32,32 @@ public:
     }
 
 private:
-    // The photon maps' vectors decoded, for every gather of this renderer (the first frame that
-    // gathers pays for it: a few milliseconds for the shared scenes' half a million photons).
-    // Where 24 bytes a photon would take more than a quarter of the memory left, the filter
-    // decodes per use instead: the same decisions, slower.
+    // The photon maps' vectors and powers decoded, for every gather of this renderer (the first
+    // frame that gathers pays for it: a few milliseconds for the shared scenes' half a million
+    // photons). Where 36 bytes a photon would take more than a quarter of the memory left, the
+    // gather decodes per use instead: the same decisions and sums, slower.
     void unpack_once() {
         if (unpacked_) return;
         unpacked_ = true;
         const std::uint64_t photons =
             std::uint64_t{scene_.photons.global.photon_count} + scene_.photons.caustic.photon_count;
-        if (photons * 6 * sizeof(float) > available_memory_bytes() / 4) return;
+        if (photons * 9 * sizeof(float) > available_memory_bytes() / 4) return;
         global_vectors_ = unpack_directions(scene_.photons.global);
         caustic_vectors_ = unpack_directions(scene_.photons.caustic);
-        scene_.photons.global.unpacked = global_vectors_.empty() ? nullptr : global_vectors_.data();
-        scene_.photons.caustic.unpacked = caustic_vectors_.empty() ? nullptr : caustic_vectors_.data();
+        global_powers_ = unpack_powers(scene_.photons.global);
+        caustic_powers_ = unpack_powers(scene_.photons.caustic);
+        auto data_or_null = [](const std::vector<float>& v) { return v.empty() ? nullptr : v.data(); };
+        scene_.photons.global.unpacked = data_or_null(global_vectors_);
+        scene_.photons.caustic.unpacked = data_or_null(caustic_vectors_);
+        scene_.photons.global.unpacked_power = data_or_null(global_powers_);
+        scene_.photons.caustic.unpacked_power = data_or_null(caustic_powers_);
     }
 
     SceneViews scene_;
     LightPowerTable lights_;
     HostBlockCache kept_;  // the frame's arrays, from one frame to the next
     bool unpacked_ = false;
-    std::vector<float> global_vectors_, caustic_vectors_;
+    std::vector<float> global_vectors_, caustic_vectors_, global_powers_, caustic_powers_;
 };
 
 }  // namespace

@@ -21,11 +21,12 @@ namespace {
 struct BothViews {
     BuiltPhotonTree tree;
     PhotonMapView packed, unpacked;
-    std::vector<float> vectors;
+    std::vector<float> vectors, powers;
     BothViews(std::uint32_t photons, std::uint32_t seed)
         : tree(build_photon_tree(test::synthetic_photons(photons, seed).hits, PhotonTreeOptions{})),
-          packed(view_of(tree)), unpacked(packed), vectors(unpack_directions(packed)) {
+          packed(view_of(tree)), unpacked(packed), vectors(unpack_directions(packed)), powers(unpack_powers(packed)) {
         unpacked.unpacked = vectors.data();
+        unpacked.unpacked_power = powers.data();
     }
 };
 
@@ -48,6 +49,21 @@ TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]
     }
     PhotonMapView empty;
     CHECK(unpack_directions(empty).empty());
+    CHECK(unpack_powers(empty).empty());
+}
+
+TEST_CASE("Decoded photon powers are photon_power's", "[photons][unpacked]") {
+    auto tree = build_photon_tree(test::synthetic_photons(3000, 52).hits, PhotonTreeOptions{});
+    const PhotonMapView map = view_of(tree);
+    const std::vector<float> v = unpack_powers(map);
+    REQUIRE(v.size() == 3u * map.photon_count);
+    std::uint32_t bright = 0;
+    for (std::uint32_t p = 0; p < map.photon_count; ++p) {
+        const glm::vec3 want = photon_power(map.power[p]);
+        REQUIRE(std::memcmp(&want.x, &v[3 * p], 3 * sizeof(float)) == 0);
+        bright += want.x > 0.0f;
+    }
+    CHECK(bright > map.photon_count / 2);
 }
 
 TEST_CASE("The surface filter decides alike from decoded and from packed vectors", "[photons][unpacked]") {
@@ -116,6 +132,11 @@ TEST_CASE("Radiance estimates from decoded vectors equal those from packed ones"
         RadianceEstimateParams params;
         params.k = q % 3 == 0 ? 8 : 32;
         params.min_normal_cos = q % 5 == 0 ? -1.0f : 0.5f;
+        params.cone_filter = q % 6 == 1;
+        if (q % 7 == 3) {  // the fixed-radius estimate reads the powers too
+            params.fixed_radius = true;
+            params.max_radius = 0.05f;
+        }
         const bool memo = q % 4 < 2;
         const RadianceEstimate a = estimate_radiance(packed, pos, normal, glm::vec3(0.5f), params, heap, 0.0f,
                                                      memo ? &memo_a : nullptr);

@@ -1,11 +1,12 @@
 #pragma once
 // The photon gather of the CPU backend: a work item gathers the 64 pixels of an 8x8 tile (64
 // consecutive work items of the tiled order) in turn. Each search of a first diffuse vertex
-// starts from the radii of the queries just made (RadiusHints) instead of the search limit, and
-// reads back the surface filter's decisions for photons its neighbours on the same face have
-// already judged (FilterMemo). The same photons as the per-pixel pass (PhotonGatherPass, the
-// GPU's one pixel per thread), found with less work. The tiles are fixed, so the image does not
-// depend on the thread count.
+// starts from the radii of the queries just made (RadiusHints) instead of the search limit, and,
+// where the photons' vectors are not decoded (memory short), reads back the surface filter's
+// decisions for photons its neighbours on the same face have already judged (FilterMemo; with
+// decoded vectors the filter judges 16 photons at once instead). The same photons as the
+// per-pixel pass (PhotonGatherPass, the GPU's one pixel per thread), found with less work. The
+// tiles are fixed, so the image does not depend on the thread count.
 #include <cstdint>
 
 #include <glm/vec3.hpp>

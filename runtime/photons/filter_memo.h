@@ -68,7 +68,7 @@ struct FilterMemo {
         const std::uint64_t want = (generation << 32) | p;
         if (tag[slot] == want) return accepted[slot];
         bool a;
-        if (!filter.quick || filter.unpacked) {  // the exact test, or its vectors decoded already
+        if (!filter.quick) {
             a = filter(p);
         } else if (!filter.passes_flags(p)) {
             a = false;

@@ -295,13 +295,8 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     if (params.cone_filter) {
         for (std::uint32_t i = 0; i < found; ++i)
             flux += cone_weight(sqrtf(heap.d2[i]), cone_k, r) * power_of(map, heap.index[i]);
-    } else if (map.unpacked_power) {  // w = 1; the powers decoded already
-        for (std::uint32_t i = 0; i < found; ++i) {
-            const float* v = map.unpacked_power + 3 * static_cast<std::uint64_t>(heap.index[i]);
-            flux += glm::vec3(v[0], v[1], v[2]);
-        }
     } else {
-        for (std::uint32_t i = 0; i < found; ++i) flux += photon_power(map.power[heap.index[i]]);
+        for (std::uint32_t i = 0; i < found; ++i) flux += power_of(map, heap.index[i]);  // w = 1
     }
     const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
     out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm);

@@ -1,8 +1,8 @@
 #include "runtime/photons/unpacked_directions.h"
 
 #include "formats/photon_layout.h"
-#include "runtime/photons/radiance_estimate.h"
 #include "runtime/backend/cpu_parallel_for.h"
+#include "runtime/photons/radiance_estimate.h"
 
 namespace kdpm {
 

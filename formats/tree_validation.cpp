@@ -1,8 +1,12 @@
 #include "formats/tree_validation.h"
 
 #include <exception>
+#include <functional>
+#include <mutex>
+#include <optional>
 #include <system_error>
 #include <thread>
+#include <vector>
 
 #include "formats/validate_kinds.h"
 
@@ -12,46 +16,65 @@ namespace {
 // Below this size a second thread costs more than it saves (the fuzzer's inputs, test files).
 constexpr std::size_t kConcurrentChecksBytes = std::size_t{1} << 20;
 
-void validate_kind(const ContainerReader& file, const ValidationOptions& options) {
+// The kind's structural passes, in the order their failures are reported.
+std::vector<std::function<void()>> passes_of(const ContainerReader& file, const ValidationOptions& options) {
     switch (file.kind()) {
-        case FileKind::geometry: validate_geometry_file(file, options); break;
-        case FileKind::photon_hits: validate_photon_hits_file(file, options); break;
-        case FileKind::photon_tree: validate_photon_tree_file(file, options); break;
+        case FileKind::geometry: return {[&] { validate_geometry_file(file, options); }};
+        case FileKind::photon_hits: return {[&] { validate_photon_hits_file(file, options); }};
+        case FileKind::photon_tree: return photon_tree_passes(file, options);
         case FileKind::test: break;
     }
+    return {};
 }
 
 }  // namespace
 
-// Every load pays both passes: on a large file the checksums run on a second thread while this
-// one checks the structure (both only read the mapping; the structural checks take any bytes, as
-// a forged checksum could bring them). A checksum failure is reported first, as it was when the
-// passes ran one after the other.
+// Every load pays the checksums and the structural passes. On a large file a second thread
+// computes the checksums and then takes structural passes from the back of the list while this
+// thread takes them from the front (all only read the mapping; the structural checks take any
+// bytes, as a forged checksum could bring them). Failures are reported as when everything ran
+// one after the other: a checksum first, then the first failing pass in list order.
 void validate_file(const ContainerReader& file, const ValidationOptions& options) {
-    std::exception_ptr checksum_error, kind_error;
-    std::thread sums;
+    const std::vector<std::function<void()>> passes = passes_of(file, options);
+    std::vector<std::exception_ptr> errors(passes.size());
+    std::exception_ptr checksum_error;
+    std::mutex claim_mutex;
+    std::size_t front = 0, back = passes.size();  // passes [front, back) are not yet claimed
+    auto claim = [&](bool from_back) -> std::optional<std::size_t> {
+        std::lock_guard<std::mutex> lock(claim_mutex);
+        if (front == back) return std::nullopt;
+        return from_back ? --back : front++;
+    };
+    auto run_claimed = [&](bool from_back) {
+        while (const std::optional<std::size_t> i = claim(from_back)) {
+            try {
+                passes[*i]();
+            } catch (...) {
+                errors[*i] = std::current_exception();
+            }
+        }
+    };
+    std::thread helper;
     if (file.file_bytes().size() >= kConcurrentChecksBytes) {
         try {
-            sums = std::thread([&] {
+            helper = std::thread([&] {
                 try {
                     file.verify();
                 } catch (...) {
                     checksum_error = std::current_exception();
                 }
+                run_claimed(true);
             });
         } catch (const std::system_error&) {
             // No thread to be had: one after the other.
         }
     }
-    if (!sums.joinable()) file.verify();
-    try {
-        validate_kind(file, options);
-    } catch (...) {
-        kind_error = std::current_exception();
-    }
-    if (sums.joinable()) sums.join();
+    if (!helper.joinable()) file.verify();
+    run_claimed(false);
+    if (helper.joinable()) helper.join();
     if (checksum_error) std::rethrow_exception(checksum_error);
-    if (kind_error) std::rethrow_exception(kind_error);
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
 }
 
 }  // namespace kdpm

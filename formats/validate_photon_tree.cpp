@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -158,6 +159,10 @@ void validate_irradiance(const ContainerReader& file) {
     auto gx = file.section<float>(id(PhotonMapKind::global, ptree_field_x));
     auto gy = file.section<float>(id(PhotonMapKind::global, ptree_field_y));
     auto gz = file.section<float>(id(PhotonMapKind::global, ptree_field_z));
+    // The global map's own pass checks these sizes too, but may not have run yet.
+    if (x.size() != n || y.size() != n || z.size() != n || gx.size() != global.photon_count ||
+        gy.size() != global.photon_count || gz.size() != global.photon_count)
+        fail("photon positions do not match the photon counts");
     std::vector<bool> used(global.photon_count, false);
     for (std::uint64_t i = 0; i < n; ++i) {
         // Spelled only for a message: building it for every photon was a fifth of a load.
@@ -176,14 +181,16 @@ void validate_irradiance(const ContainerReader& file) {
 
 }  // namespace
 
-void validate_photon_tree_file(const ContainerReader& file, const ValidationOptions&) {
-    validate_map(file, PhotonMapKind::global);
+std::vector<std::function<void()>> photon_tree_passes(const ContainerReader& file, const ValidationOptions&) {
+    std::vector<std::function<void()>> passes;
+    passes.push_back([&file] { validate_map(file, PhotonMapKind::global); });
     if (file.find(photon_tree_section(PhotonMapKind::caustic, ptree_field_info)))
-        validate_map(file, PhotonMapKind::caustic);
+        passes.push_back([&file] { validate_map(file, PhotonMapKind::caustic); });
     if (file.find(photon_tree_section(PhotonMapKind::irradiance, ptree_field_info))) {
-        validate_map(file, PhotonMapKind::irradiance);
-        validate_irradiance(file);
+        passes.push_back([&file] { validate_map(file, PhotonMapKind::irradiance); });
+        passes.push_back([&file] { validate_irradiance(file); });
     }
+    return passes;
 }
 
 }  // namespace kdpm

@@ -216,3 +216,57 @@ TEST_CASE("a gather hit reads the irradiance of the nearest chosen photon on its
     CHECK(found > 50);
     CHECK(missed > 50);  // among them the (0, -1, 0) queries: no photon faces down
 }
+
+TEST_CASE("a large file with faults in several maps names the first, whichever thread checks it",
+          "[photons][irradiance][corrupt]") {
+    // Over a megabyte: a second thread checksums and takes the irradiance map's passes from the
+    // back while the global map is checked (tree_validation.cpp); the message must be the one a
+    // check of the maps in file order gives.
+    const PhotonHitSet set = test::synthetic_photons(60000, 25);
+    const BuiltPhotonTree global =
+        build_photon_tree(set.hits, PhotonTreeOptions{}, set.info.emitted_count, set.info.max_bounces);
+    const BuiltIrradianceMap irradiance =
+        build_irradiance_map(global, set.hits, every_nth(4)(global), PhotonTreeOptions{});
+    auto bytes_with = [&](auto edit_global, auto edit_irradiance) {
+        BuiltPhotonTree g = global;
+        BuiltIrradianceMap m = irradiance;
+        edit_global(g);
+        edit_irradiance(m);
+        ContainerWriter w(FileKind::photon_tree);
+        add_photon_tree_sections(w, PhotonMapKind::global, g);
+        add_irradiance_map_sections(w, m);
+        w.set_metadata(Metadata{});
+        return w.bytes();
+    };
+    auto message = [](const std::vector<std::uint8_t>& bytes) {
+        try {
+            validate_bytes(bytes);
+        } catch (const FormatError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    auto keep_global = [](BuiltPhotonTree&) {};
+    auto keep_irradiance = [](BuiltIrradianceMap&) {};
+    auto negative = [](BuiltIrradianceMap& m) { m.irradiance[m.irradiance.size() / 2].rgb[0] = -1.0f; };
+    auto moved = [](BuiltPhotonTree& t) { t.x[t.x.size() / 3] = t.info.bounds_min[0] - 1.0f; };
+    auto short_x = [](BuiltPhotonTree& t) { t.x.pop_back(); };
+
+    const auto good = bytes_with(keep_global, keep_irradiance);
+    REQUIRE(good.size() > (std::size_t{1} << 20));
+    CHECK(message(good) == "accepted");
+    for (int run = 0; run < 4; ++run) {
+        const std::string only_irradiance = message(bytes_with(keep_global, negative));
+        INFO(only_irradiance);
+        CHECK_THAT(only_irradiance, Catch::Contains("irradiance tree: photon") && Catch::Contains("negative irradiance"));
+        const std::string both = message(bytes_with(moved, negative));
+        INFO(both);
+        CHECK_THAT(both, Catch::StartsWith("x.kdp: photon tree: photon") && Catch::Contains("lies outside the cell"));
+        // The irradiance check reads the global map's positions: it must refuse a short array
+        // itself (the global map's pass may not have run yet), and the global map's fault is named.
+        const std::string short_positions = message(bytes_with(short_x, keep_irradiance));
+        INFO(short_positions);
+        CHECK_THAT(short_positions, Catch::Contains("photon tree: photon arrays do not all hold"));
+        CHECK_THROWS_AS(PhotonMapFile::from_bytes(bytes_with(short_x, keep_irradiance), "short.kdp"), FormatError);
+    }
+}

@@ -1,6 +1,9 @@
 #include "runtime/render/scene_loader.h"
 
+#include <exception>
 #include <optional>
+#include <system_error>
+#include <thread>
 
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_map_file.h"
@@ -22,11 +25,37 @@ LoadedScene LoadedScene::load(const std::filesystem::path& geometry,
                               const std::optional<std::filesystem::path>& photons) {
     StopWatch watch;
     LoadedScene scene;
-    scene.files_->geometry.emplace(GeometryFile::open(geometry));
+    // The photon file is opened (mapped and checked) on a second thread while this one opens the
+    // geometry: each check keeps a thread busy only part of the time. A geometry error is reported
+    // first, as when the files were opened one after the other.
+    std::exception_ptr photons_error;
+    std::thread photons_thread;
+    auto open_photons = [&] {
+        try {
+            scene.files_->photons.emplace(PhotonMapFile::open(*photons));
+        } catch (...) {
+            photons_error = std::current_exception();
+        }
+    };
+    if (photons) {
+        try {
+            photons_thread = std::thread(open_photons);
+        } catch (const std::system_error&) {
+            // No thread to be had: after the geometry, below.
+        }
+    }
+    try {
+        scene.files_->geometry.emplace(GeometryFile::open(geometry));
+    } catch (...) {
+        if (photons_thread.joinable()) photons_thread.join();
+        throw;
+    }
+    if (photons_thread.joinable()) photons_thread.join();
+    else if (photons) open_photons();
+    if (photons_error) std::rethrow_exception(photons_error);
     scene.views_.geometry = scene.files_->geometry->view();
     scene.views_.camera = scene.files_->geometry->camera();
     if (photons) {
-        scene.files_->photons.emplace(PhotonMapFile::open(*photons));
         scene.views_.photons.global = scene.files_->photons->view(PhotonMapKind::global);
         scene.views_.photons.caustic = scene.files_->photons->view(PhotonMapKind::caustic);
         scene.views_.photons.irradiance = scene.files_->photons->irradiance_map();

@@ -65,14 +65,14 @@ void check_tree(const ContainerReader& file, const GeometryInfo& info, const Tre
     const std::size_t count = t.nodes.size();
     std::vector<std::uint8_t> seen(count, 0);
     std::vector<WalkEntry> stack;
+    stack.reserve(kMaxKdTreeDepth + 1);
     AxisBox root;
     for (int a = 0; a < 3; ++a) root.lo[a] = info.bounds_min[a], root.hi[a] = info.bounds_max[a];
-    stack.push_back({0, 0, root});
     std::uint32_t max_depth = 0;
     std::size_t reached = 0;
-    while (!stack.empty()) {
-        WalkEntry e = stack.back();
-        stack.pop_back();
+    // Pre-order: the "below" child is walked next in place; only the "above" child is stacked.
+    WalkEntry e{0, 0, root};
+    for (bool more = true; more;) {
         if (seen[e.node]) fail(file, "node " + std::to_string(e.node) + " is reached twice");
         seen[e.node] = 1;
         ++reached;
@@ -81,6 +81,11 @@ void check_tree(const ContainerReader& file, const GeometryInfo& info, const Tre
             if (static_cast<std::uint64_t>(n.first()) + n.count() > t.leaf.size())
                 fail(file, "leaf " + std::to_string(e.node) + " lists items past the leaf index array");
             max_depth = std::max(max_depth, e.depth);
+            more = !stack.empty();
+            if (more) {
+                e = stack.back();
+                stack.pop_back();
+            }
             continue;
         }
         const int axis = n.axis();
@@ -92,11 +97,13 @@ void check_tree(const ContainerReader& file, const GeometryInfo& info, const Tre
             fail(file, "node " + std::to_string(e.node) + " has a child index out of range");
         if (e.depth + 1 > kMaxKdTreeDepth)
             fail(file, "tree deeper than " + std::to_string(kMaxKdTreeDepth) + " levels");
-        AxisBox lo_cell = e.cell, hi_cell = e.cell;
-        lo_cell.hi[axis] = split;
-        hi_cell.lo[axis] = split;
-        stack.push_back({static_cast<std::uint32_t>(above), e.depth + 1, hi_cell});
-        stack.push_back({static_cast<std::uint32_t>(below), e.depth + 1, lo_cell});
+        WalkEntry& hi = stack.emplace_back(e);
+        hi.node = static_cast<std::uint32_t>(above);
+        hi.depth = e.depth + 1;
+        hi.cell.lo[axis] = split;
+        e.node = static_cast<std::uint32_t>(below);
+        e.depth = hi.depth;
+        e.cell.hi[axis] = split;
     }
     if (reached != count) fail(file, std::to_string(count - reached) + " nodes are not reachable from the root");
     if (max_depth != info.max_depth)

@@ -159,15 +159,24 @@ TEST_CASE("corrupt geometry files are refused", "[geometry][tools]") {
         bad_split.nodes[0] = KdNode::inner(bad_split.nodes[0].axis(), 1e9f, bad_split.nodes[0].above_child());
         Scene bad_material = scene;
         bad_material.triangles[5].material = 9;
+        // The walk's first fault is named: the root's children, node 1 twice, the root's split.
         int i = 0;
-        using Case = std::pair<const Scene*, const KdTree*>;
-        for (const auto& [s, t] : {Case{&scene, &bad_leaf}, Case{&scene, &bad_child}, Case{&scene, &cycle},
-                                   Case{&scene, &bad_split}, Case{&bad_material, &tree}}) {
+        struct Case {
+            const Scene* scene;
+            const KdTree* tree;
+            const char* message;
+        };
+        for (const Case& c : {Case{&scene, &bad_leaf, "leaf index 0 names triangle 300"},
+                              Case{&scene, &bad_child, "node 0 has a child index out of range"},
+                              Case{&scene, &cycle, "node 1 is reached twice"},
+                              Case{&scene, &bad_split, "node 0 splits outside its cell"},
+                              Case{&bad_material, &tree, "triangle 5 has material index out of range"}}) {
             const fs::path p = dir / ("bad" + std::to_string(i++) + ".kdg");
-            assemble_geometry_file(*s, *t, KdBuildParams{}).write(p);
+            assemble_geometry_file(*c.scene, *c.tree, KdBuildParams{}).write(p);
             INFO(p.string());
             check_refused(p);
             CHECK_THROWS_AS(GeometryFile::open(p), FormatError);
+            CHECK_THROWS_WITH(GeometryFile::open(p), Catch::Contains(c.message));
         }
     }
 }

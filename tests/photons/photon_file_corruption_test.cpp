@@ -10,6 +10,7 @@
 #include "formats/tree_validation.h"
 #include "runtime/photons/photon_map_file.h"
 #include "tests/photons/synthetic_photons.h"
+#include "tests/support/error_text.h"
 
 using namespace kdpm;
 
@@ -133,14 +134,7 @@ TEST_CASE("A large photon tree file reports its first fault as a small one does"
     const auto good = tampered_tree(tree, [](BuiltPhotonTree&) {});
     REQUIRE(good.size() > (std::size_t{1} << 20));
     CHECK_NOTHROW(validate_bytes(good));
-    auto message = [](const std::vector<std::uint8_t>& bytes) {
-        try {
-            validate_bytes(bytes);
-        } catch (const FormatError& e) {
-            return std::string(e.what());
-        }
-        return std::string("accepted");
-    };
+    auto message = [](const std::vector<std::uint8_t>& bytes) { return test::error_text([&] { validate_bytes(bytes); }); };
 
     // Checksums consistent: the structural fault is named.
     const auto moved = tampered_tree(tree, [](BuiltPhotonTree& t) { t.x.back() = t.info.bounds_min[0] - 1.0f; });

@@ -3,11 +3,12 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 #include "runtime/render/scene_loader.h"
+#include "tests/support/error_text.h"
+#include "tests/support/file_contents.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -16,12 +17,12 @@ using namespace kdpm;
 namespace {
 
 std::string load_error(const std::filesystem::path& kdg, const std::filesystem::path& kdp) {
-    try {
-        (void)LoadedScene::load(kdg, kdp);
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "loaded";
+    return test::error_text([&] { (void)LoadedScene::load(kdg, kdp); });
+}
+
+std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path) {
+    const std::string text = test::file_contents(path);
+    return {text.begin(), text.end()};
 }
 
 void write_bytes(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes) {
@@ -46,14 +47,12 @@ TEST_CASE("a scene loads both files and reports the geometry's error first", "[r
     r = test::run_tool("kdpm-build-photons " + kdph.string() + " -o " + kdp.string() + " --quiet");
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    std::ifstream photons_in(kdp, std::ios::binary);
-    const std::vector<std::uint8_t> photons((std::istreambuf_iterator<char>(photons_in)), std::istreambuf_iterator<char>());
+    const std::vector<std::uint8_t> photons = read_bytes(kdp);
     REQUIRE(photons.size() > (std::size_t{1} << 20));
     std::vector<std::uint8_t> damaged = photons;
     damaged[damaged.size() / 2] ^= 0x10;
     write_bytes(bad_kdp, damaged);
-    std::ifstream in(kdg, std::ios::binary);
-    std::vector<std::uint8_t> geometry((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::uint8_t> geometry = read_bytes(kdg);
     geometry[geometry.size() / 2] ^= 0x10;
     write_bytes(bad_kdg, geometry);
 

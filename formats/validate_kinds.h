@@ -1,5 +1,6 @@
 #pragma once
-// One structural validator per file kind; each lives in its own validate_*.cpp.
+// One structural validator per file kind (a photon tree file's as separate passes); each lives in
+// its own validate_*.cpp.
 #include <functional>
 #include <vector>
 

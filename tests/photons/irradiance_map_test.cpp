@@ -60,6 +60,15 @@ std::vector<std::uint8_t> map_file_bytes(const PhotonHitSet& set, std::uint32_t 
     return build_photon_map_file(set, PhotonTreeOptions{}, Metadata{}, every_nth(every)).writer.bytes();
 }
 
+// A .kdp holding a global map and an irradiance map over it, as the builders write them.
+std::vector<std::uint8_t> photon_file_bytes(const BuiltPhotonTree& global, const BuiltIrradianceMap& irradiance) {
+    ContainerWriter w(FileKind::photon_tree);
+    add_photon_tree_sections(w, PhotonMapKind::global, global);
+    add_irradiance_map_sections(w, irradiance);
+    w.set_metadata(Metadata{});
+    return w.bytes();
+}
+
 void validate_bytes(const std::vector<std::uint8_t>& bytes) {
     auto reader = ContainerReader::from_bytes(bytes, "x.kdp");
     validate_file(reader, ValidationOptions{});
@@ -111,11 +120,7 @@ TEST_CASE("broken irradiance maps are refused by the validator and the loader", 
     auto bytes_with = [&](auto edit) {
         BuiltIrradianceMap m = good;
         edit(m);
-        ContainerWriter w(FileKind::photon_tree);
-        add_photon_tree_sections(w, PhotonMapKind::global, global);
-        add_irradiance_map_sections(w, m);
-        w.set_metadata(Metadata{});
-        return w.bytes();
+        return photon_file_bytes(global, m);
     };
     CHECK_NOTHROW(validate_bytes(bytes_with([](BuiltIrradianceMap&) {})));
     const std::pair<const char*, std::vector<std::uint8_t>> cases[] = {
@@ -233,11 +238,7 @@ TEST_CASE("a large file with faults in several maps names the first, whichever t
         BuiltIrradianceMap m = irradiance;
         edit_global(g);
         edit_irradiance(m);
-        ContainerWriter w(FileKind::photon_tree);
-        add_photon_tree_sections(w, PhotonMapKind::global, g);
-        add_irradiance_map_sections(w, m);
-        w.set_metadata(Metadata{});
-        return w.bytes();
+        return photon_file_bytes(g, m);
     };
     auto message = [](const std::vector<std::uint8_t>& bytes) { return test::error_text([&] { validate_bytes(bytes); }); };
     auto keep_global = [](BuiltPhotonTree&) {};

@@ -66,17 +66,18 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
     }
 
     // Pre-order walk: the k-th visited node must be node k, so the nodes are exactly one tree.
+    // A cell holds lo <= c < hi on each axis. The root's bounds are closed (c <= bounds_max):
+    // with finite coordinates that is c < the next float up, so every axis takes one test.
     struct Item {
         std::uint32_t node, depth;
         float lo[3], hi[3];
-        bool hi_open[3];  // coordinate must be < hi (a split above) rather than <= hi (the root bounds)
     };
     std::vector<Item> stack;
     stack.reserve(2 * kMaxPhotonTreeDepth + 2);
-    Item root{0, 0, {}, {}, {false, false, false}};
+    Item root{0, 0, {}, {}};
     for (int a = 0; a < 3; ++a) {
         root.lo[a] = info.bounds_min[a];
-        root.hi[a] = info.bounds_max[a];
+        root.hi[a] = std::nextafter(info.bounds_max[a], std::numeric_limits<float>::infinity());
     }
     std::uint64_t visited = 0, next_photon = 0, leaves = 0;
     std::uint32_t depth_seen = 0, largest_leaf = 0;
@@ -96,20 +97,19 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
                      ", expected " + std::to_string(next_photon));
             if (node.count() > n - next_photon) fail("leaf " + std::to_string(it.node) + " runs past the photons");
             const std::uint64_t begin = node.first(), end = begin + std::uint64_t{node.count()};
-            // Inside: !(c < lo) and (c < hi where a split bounds the cell, else !(c > hi)), so
-            // NaN fails wherever a split bounds it (the sweep above has refused it anyway).
-            bool inside = true;
-            for (std::uint64_t p = begin; p < end; ++p)
-                for (int a = 0; a < 3; ++a) {
-                    const float c = coord[a][p];
-                    inside &= !(c < it.lo[a]) & (it.hi_open[a] ? c < it.hi[a] : !(c > it.hi[a]));
-                }
+            // An axis at a time, without branches (vectorised); the sweep above has refused
+            // non-finite coordinates, so the comparisons are exact.
+            std::uint32_t inside = 1;
+            for (int a = 0; a < 3; ++a) {
+                const float* c = coord[a];
+                const float lo = it.lo[a], hi = it.hi[a];
+                for (std::uint64_t p = begin; p < end; ++p)
+                    inside &= static_cast<std::uint32_t>(c[p] >= lo) & static_cast<std::uint32_t>(c[p] < hi);
+            }
             for (std::uint64_t p = begin; p < end && !inside; ++p)
-                for (int a = 0; a < 3; ++a) {
-                    float c = coord[a][p];
-                    if (c < it.lo[a] || (it.hi_open[a] ? !(c < it.hi[a]) : c > it.hi[a]))
+                for (int a = 0; a < 3; ++a)
+                    if (!(coord[a][p] >= it.lo[a] && coord[a][p] < it.hi[a]))
                         fail("photon " + std::to_string(p) + " lies outside the cell of leaf " + std::to_string(it.node));
-                }
             next_photon += node.count();
             more = !stack.empty();
             if (more) {
@@ -131,7 +131,6 @@ void validate_map(const ContainerReader& file, PhotonMapKind map) {
         it.node = it.node + 1;
         it.depth = hi.depth;
         it.hi[axis] = s;
-        it.hi_open[axis] = true;
     }
     if (visited != nodes.size()) fail("unreachable nodes");
     if (next_photon != n) fail("leaves cover " + std::to_string(next_photon) + " of " + std::to_string(n) + " photons");

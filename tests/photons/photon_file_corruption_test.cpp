@@ -154,3 +154,37 @@ TEST_CASE("A large photon tree file reports its first fault as a small one does"
     INFO(m);
     CHECK(m.find("lies outside") == std::string::npos);
 }
+
+TEST_CASE("A photon tree's cells are closed at the root's upper bounds and open at splits", "[photons][corrupt]") {
+    auto set = test::synthetic_photons(3000, 21);
+    const auto tree = build_photon_tree(set.hits, PhotonTreeOptions{}, 3000, 4);
+    REQUIRE(!tree.nodes[0].is_leaf());
+    auto coords = [](BuiltPhotonTree& t, int axis) -> std::vector<float>& { return axis == 0 ? t.x : axis == 1 ? t.y : t.z; };
+    auto largest = [&](const BuiltPhotonTree& t, int axis, std::size_t end) {
+        auto& c = coords(const_cast<BuiltPhotonTree&>(t), axis);
+        return static_cast<std::size_t>(std::max_element(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(end)) - c.begin());
+    };
+    auto outcome = [&](int axis, std::size_t photon, float value) {
+        return test::error_text([&] {
+            validate_bytes(tampered_tree(tree, [&](BuiltPhotonTree& t) { coords(t, axis)[photon] = value; }));
+        });
+    };
+    for (int a = 0; a < 3; ++a) {
+        INFO("axis " << a);
+        // The photon furthest up the axis lies in a leaf bounded above by the root's bounds.
+        const std::size_t top = largest(tree, a, tree.x.size());
+        const float bound = tree.info.bounds_max[a];
+        CHECK(outcome(a, top, bound) == "accepted");
+        CHECK_THAT(outcome(a, top, std::nextafter(bound, HUGE_VALF)), Catch::Contains("lies outside the cell"));
+    }
+    // The root's below subtree holds the photons before its above subtree's first leaf; its
+    // furthest photon along the split axis lies in a leaf bounded above by the root's split.
+    const KdNode root = tree.nodes[0];
+    std::uint32_t node = root.above_child();
+    while (!tree.nodes[node].is_leaf()) ++node;  // pre-order: the first leaf below the above child
+    const std::size_t below_end = tree.nodes[node].first();
+    REQUIRE(below_end > 0);
+    const std::size_t edge = largest(tree, root.axis(), below_end);
+    CHECK(outcome(root.axis(), edge, std::nextafter(root.split(), -HUGE_VALF)) == "accepted");
+    CHECK_THAT(outcome(root.axis(), edge, root.split()), Catch::Contains("lies outside the cell"));
+}

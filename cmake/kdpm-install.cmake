@@ -11,7 +11,10 @@ set_target_properties(kdpm_formats PROPERTIES EXPORT_NAME formats)
 set_target_properties(kdpm_runtime PROPERTIES EXPORT_NAME runtime)
 
 set(kdpm_exported kdpm_formats kdpm_runtime kdpm_render kdpm_photon_shooter kdpm_backend kdpm_backend_cpu
-    kdpm_geometry_runtime kdpm_runtime_photons kdpm_shading kdpm_oiio)
+    kdpm_geometry_runtime kdpm_runtime_photons kdpm_shading)
+if(TARGET kdpm_oiio_loader)
+  list(APPEND kdpm_exported kdpm_oiio_loader)
+endif()
 if(TARGET kdpm_cudart)
   list(APPEND kdpm_exported kdpm_cudart)
 endif()

@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "runtime/oiio/oiio_plugin_loader.h"
 #include "runtime/render/image_encoder.h"
 #include "runtime/render/image_output.h"
 #include "tests/support/run_command.h"
@@ -41,6 +42,46 @@ TEST_CASE("the built-in PNG encoder writes what OpenImageIO reads back", "[outpu
     }
     CHECK_FALSE(encode_builtin_image(bytes, dir / "b.png", w, h, {"R", "G"}, std::vector<float>(w * h * 2), true).empty());
     CHECK_FALSE(encode_builtin_image(bytes, dir / "c.tif", w, h, {"R", "G", "B"}, rgb, true).empty());
+}
+
+TEST_CASE("kdpm's PNG holds the pixels OpenImageIO's PNG writer writes for the same floats", "[output][builtin][oiio]") {
+    // kdpm-render writes .png itself (OpenImageIO did before it became a module): every 8-bit
+    // level, the values halfway between levels, and values outside [0, 1].
+    std::vector<float> rgb;
+    for (int k = 0; k <= 255; ++k)
+        for (const float v : {k / 255.0f, (k + 0.5f) / 255.0f, std::nextafter((k + 0.5f) / 255.0f, 0.0f)}) rgb.push_back(v);
+    for (const float v : {-1.0f, -0.0f, 1.5f, 1e30f}) rgb.push_back(v);
+    while (rgb.size() % 3 != 0) rgb.push_back(0.25f);
+    const int w = static_cast<int>(rgb.size() / 3), h = 1;
+
+    test::TempDir dir;
+    std::vector<std::uint8_t> ours, theirs;
+    REQUIRE(encode_builtin_image(ours, dir / "ours.png", w, h, {"R", "G", "B"}, rgb, true).empty());
+    OiioImageRequest request;
+    request.destination = (dir / "theirs.png").string();
+    request.temp_path = (dir / "theirs.tmp").string();
+    request.width = w;
+    request.height = h;
+    request.channel_names = {"R", "G", "B"};
+    request.pixels = rgb.data();
+    request.eight_bit = true;
+    REQUIRE(oiio_plugin().encode(request, theirs).empty());
+    REQUIRE(!theirs.empty());
+    auto decode = [&](const std::vector<std::uint8_t>& bytes, const char* name) {
+        std::ofstream(dir / name, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+        auto in = OIIO::ImageInput::open((dir / name).string());
+        REQUIRE(in);
+        REQUIRE(in->spec().width == w);
+        std::vector<unsigned char> pixels(rgb.size());
+        REQUIRE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+        return pixels;
+    };
+    const auto a = decode(ours, "ours.png"), b = decode(theirs, "theirs.png");
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        INFO("value " << rgb[i]);
+        CHECK(int{a[i]} == int{b[i]});
+    }
 }
 
 TEST_CASE("kdpm-image-diff reports the difference of two PFM frames", "[output][builtin]") {

@@ -17,7 +17,11 @@ CommandResult run_tool(const std::string& command) {
     // KDPM_TEST_BIN_DIR runs the end-to-end tests against other builds of the tools (e.g. an
     // older main, to see a regression test fail there).
     const char* other = std::getenv("KDPM_TEST_BIN_DIR");
-    std::string full = std::string(other && *other ? other : KDPM_BIN_DIR) + "/" + command + " 2>&1 </dev/null";
+    return run_shell(std::string(other && *other ? other : KDPM_BIN_DIR) + "/" + command);
+}
+
+CommandResult run_shell(const std::string& command) {
+    const std::string full = command + " 2>&1 </dev/null";
     FILE* pipe = ::popen(full.c_str(), "r");
     if (!pipe) throw std::runtime_error("popen failed");
     CommandResult r{0, {}};

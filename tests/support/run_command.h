@@ -9,6 +9,9 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 
+// Runs `command` in /bin/sh with no input, stdout and stderr captured together.
+CommandResult run_shell(const std::string& command);
+
 // `command` starts with a tool name (e.g. "kdpm-validate x.kdg"); it is run from build/bin.
 CommandResult run_tool(const std::string& command);
 

@@ -2,10 +2,8 @@
 // elsewhere, and says which option to pass when it finds none.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
-#include <cstdio>
-#include <cstdlib>
+#include <filesystem>
+#include <string>
 
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
@@ -16,15 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 test::CommandResult run_in(const fs::path& cwd, const std::string& command) {
-    const std::string line = "cd '" + cwd.string() + "' && " + command + " 2>&1 </dev/null";
-    FILE* pipe = ::popen(line.c_str(), "r");
-    REQUIRE(pipe);
-    test::CommandResult r{0, {}};
-    char buf[4096];
-    while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) r.output.append(buf, n);
-    const int status = ::pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
-    return r;
+    return test::run_shell("cd '" + cwd.string() + "' && " + command);
 }
 
 }  // namespace

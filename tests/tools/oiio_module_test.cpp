@@ -3,7 +3,6 @@
 // needs no module, and a format that needs it fails in one line when it cannot be loaded.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,16 +15,6 @@ using namespace kdpm;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string dynamic_section(const std::string& path) {
-    std::string out;
-    if (FILE* pipe = ::popen(("readelf -d '" + path + "' 2>&1").c_str(), "r")) {
-        char buf[4096];
-        while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-        ::pclose(pipe);
-    }
-    return out;
-}
 
 // Sets an environment variable for the life of the object.
 class ScopedEnv {
@@ -53,7 +42,7 @@ TEST_CASE("no tool links OpenImageIO", "[tools][oiio]") {
             WARN(tool << " is not built here");
             continue;
         }
-        const std::string dynamic = dynamic_section(test::tool_path(tool));
+        const std::string dynamic = test::run_shell("readelf -d '" + test::tool_path(tool) + "'").output;
         INFO(tool << ":\n" << dynamic);
         REQUIRE_THAT(dynamic, Catch::Contains("NEEDED"));  // readelf ran and read the file
         CHECK_THAT(dynamic, !Catch::Contains("OpenImageIO"));

@@ -3,9 +3,6 @@
 // when xvfb-run is missing or no X server starts, or when the build has no scene tools.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,22 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-test::CommandResult shell(const std::string& command) {
-    FILE* pipe = ::popen((command + " 2>&1 </dev/null").c_str(), "r");
-    if (!pipe) return {127, "popen failed"};
-    test::CommandResult r{0, {}};
-    std::array<char, 4096> buf;
-    while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) r.output.append(buf.data(), n);
-    const int status = ::pclose(pipe);
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return r;
-}
-
 // Under the asan preset, LeakSanitizer would fail the viewer for allocations that Mesa, X11 and
 // GLFW keep until exit; the viewer's own parts are leak-checked by the unit tests.
 const std::string kViewerEnv = "ASAN_OPTIONS=detect_leaks=0 ";
 
-bool have_xvfb_run() { return shell("command -v xvfb-run").exit_code == 0; }
+bool have_xvfb_run() { return test::run_shell("command -v xvfb-run").exit_code == 0; }
 
 bool have_tools() {
     for (const char* t : {"kdpm-view", "kdpm-render", "kdpm-build-geometry", "kdpm-shoot-photons", "kdpm-build-photons"})
@@ -118,7 +104,7 @@ TEST_CASE("kdpm-view screenshot of the Cornell box matches kdpm-render", "[view]
         r = test::run_tool("kdpm-render " + kdg + " " + kdp + common + " --mode " + mode + passes + " -o " +
                            reference.string() + " --quiet");
         REQUIRE(r.exit_code == 0);
-        r = shell(kViewerEnv + "xvfb-run -a " + test::tool_path("kdpm-view") + " " + kdg + " " + kdp + common + " --mode " + mode +
+        r = test::run_shell(kViewerEnv + "xvfb-run -a " + test::tool_path("kdpm-view") + " " + kdg + " " + kdp + common + " --mode " + mode +
                   " --frames 2 --spp 1 --screenshot " + screenshot.string() + " --quiet");
         if (r.exit_code != 0 && display_unavailable(r)) {
             WARN("no X server could be started under xvfb-run: skipped (" << r.output << ")");
@@ -151,14 +137,14 @@ TEST_CASE("kdpm-view --panel shows the control panel over the image, and only th
     const fs::path plain = dir / "plain.png", panel = dir / "panel.png";
     const std::string common = test::tool_path("kdpm-view") + " " + kdg +
                                " --width 480 --height 360 --mode direct --light-samples 2 --backend cpu --frames 1 --quiet";
-    auto r = shell(kViewerEnv + "xvfb-run -a " + common + " --screenshot " + plain.string());
+    auto r = test::run_shell(kViewerEnv + "xvfb-run -a " + common + " --screenshot " + plain.string());
     if (r.exit_code != 0 && display_unavailable(r)) {
         WARN("no X server could be started under xvfb-run: skipped (" << r.output << ")");
         return;
     }
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
-    r = shell(kViewerEnv + "xvfb-run -a " + common + " --panel --screenshot " + panel.string());
+    r = test::run_shell(kViewerEnv + "xvfb-run -a " + common + " --panel --screenshot " + panel.string());
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     const Pixels a = read_rgb(plain), b = read_rgb(panel);
@@ -219,7 +205,7 @@ TEST_CASE("kdpm-view without a display says so in one line", "[view][e2e]") {
     const std::string kdg = (dir / "cornell.kdg").string();
     REQUIRE(test::run_tool("kdpm-build-geometry " + test::source_path("scenes/cornell-box/cornell-box.json") +
                            " -o " + kdg + " --quiet").exit_code == 0);
-    auto r = shell(kViewerEnv + "env -u DISPLAY -u WAYLAND_DISPLAY " + test::tool_path("kdpm-view") + " " + kdg +
+    auto r = test::run_shell(kViewerEnv + "env -u DISPLAY -u WAYLAND_DISPLAY " + test::tool_path("kdpm-view") + " " + kdg +
                    " --frames 1 --quiet");
     CHECK(r.exit_code == 1);
     CHECK(r.output.rfind("kdpm-view: error: no display available", 0) == 0);

@@ -59,7 +59,6 @@ std::string decode(const std::string& path, std::uint64_t max_side, kdpm::OiioDe
     const OIIO::ImageSpec& spec = in->spec();
     image.width = spec.width;
     image.height = spec.height;
-    image.depth = spec.depth;
     image.channels = spec.nchannels;
     image.integer_format = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1 ||

@@ -20,7 +20,7 @@ struct OiioImageRequest {
 };
 
 struct OiioDecodedImage {
-    int width = 0, height = 0, depth = 1, channels = 0;
+    int width = 0, height = 0, channels = 0;
     bool integer_format = false;  // 8- or 16-bit integers (sRGB-encoded colours)
     std::vector<float> pixels;    // width * height * channels, rows top to bottom
 };
@@ -36,7 +36,7 @@ struct OiioPluginApi {
 };
 
 // Bumped whenever OiioPluginApi or the structures above change: a stale module is refused.
-inline constexpr std::uint32_t kOiioPluginAbi = 1;
+inline constexpr std::uint32_t kOiioPluginAbi = 2;
 
 }  // namespace kdpm
 

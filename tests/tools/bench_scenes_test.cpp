@@ -47,3 +47,39 @@ TEST_CASE("kdpm-bench finds scenes/ from the working directory", "[tools][bench]
     INFO(given.output);
     CHECK(given.exit_code == 0);
 }
+
+TEST_CASE("kdpm-bench and kdpm-bench-build build with the SAH costs given, and refuse absurd ones", "[tools][bench]") {
+    test::TempDir dir;
+    const std::string work = (dir / "work").string();
+    fs::create_directories(work);
+    const std::string bench = "kdpm-bench --scenes cornell-box --frames 1 --photons 2000 --size 16 --no-peers --quick "
+                              "--quiet --repo " + test::source_path("") + " --work " + work;
+
+    const auto costly = test::run_tool(bench + " --intersection-cost 0.75 --empty-bonus 0.5 --traversal-cost 2");
+    INFO(costly.output);
+    REQUIRE(costly.exit_code == 0);
+    CHECK_THAT(costly.output, Catch::Contains("geometry SAH costs: traversal / intersection / empty bonus") &&
+                                  Catch::Contains("2 / 0.75 / 0.5"));
+    // The scene the bench traced is the one built with those costs: its file says so.
+    const auto inspected = test::run_tool("kdpm-inspect " + work + "/cornell-box.kdg --json");
+    INFO(inspected.output);
+    CHECK_THAT(inspected.output, Catch::Contains("\"intersection_cost\": \"0.75\"") &&
+                                     Catch::Contains("\"empty_bonus\": \"0.5\"") &&
+                                     Catch::Contains("\"traversal_cost\": \"2\""));
+
+    for (const char* bad : {" --intersection-cost 0", " --empty-bonus 1.5", " --traversal-cost -1"}) {
+        const auto refused = test::run_tool(bench + bad);
+        INFO(bad << ": " << refused.output);
+        CHECK(refused.exit_code != 0);
+        CHECK_THAT(refused.output, Catch::Contains("error:") && Catch::Contains("out of range"));
+    }
+    // The shipped Cornell box only (no shared scenes where KDPM_SCENES points).
+    const std::string build_bench_command =
+        "KDPM_SCENES='" + (dir / "none").string() + "' " + test::tool_path("kdpm-bench-build") + " --runs 1";
+    const auto build_bench = test::run_shell(build_bench_command + " --intersection-cost 0.75");
+    INFO(build_bench.output);
+    CHECK(build_bench.exit_code == 0);
+    CHECK_THAT(build_bench.output, Catch::Contains("SAH costs: traversal 1, intersection 0.75, empty bonus 0.2"));
+    const auto refused_build = test::run_shell(build_bench_command + " --empty-bonus 2");
+    CHECK(refused_build.exit_code != 0);
+}

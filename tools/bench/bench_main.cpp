@@ -13,6 +13,7 @@
 #include "tools/bench/scenes_root.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
+#include "tools/cli/sah_cost_options.h"
 
 using namespace kdpm;
 namespace fs = std::filesystem;
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
         .flag("quick", &quick, "k = 2, 32, 256 only")
         .flag("all-threads-only", &all_threads_only, "no 1-thread rows (a GPU machine's check, short of time)")
         .flag("quiet", &quiet, "no progress lines on stderr");
+    cli::SahCosts costs;  // of every geometry build: time the whole table for the costs a pipeline uses
+    cli::add_sah_cost_options(args, costs);
     args.parse(argc, argv);
     return cli::run_tool("kdpm-bench", [&] {
         const fs::path root = bench::find_scenes_root(scenes_root, argv[0]);
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
             c.photons = static_cast<std::uint32_t>(photons);
             c.peers = !no_peers;
             c.quiet = quiet;
+            c.build = cli::with_costs(KdBuildParams{}, costs);
             try {
                 results.push_back(bench::run_scene_bench(c));
             } catch (const std::exception& e) {

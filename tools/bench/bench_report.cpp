@@ -14,6 +14,8 @@ std::string verdict(bool met) { return met ? "met" : "MISSED"; }
 std::string offline_table(const SceneBenchResult& r, bool md) {
     Table t{{"offline stage", "value"}, {}};
     t.rows.push_back({"triangles", fmt("%llu", (unsigned long long)r.triangles)});
+    t.rows.push_back({"geometry SAH costs: traversal / intersection / empty bonus",
+                      fmt("%g / %g / %g", r.build.traversal_cost, r.build.intersection_cost, r.build.empty_bonus)});
     for (auto [threads, v] : r.geometry_build_ms)
         t.rows.push_back({fmt("geometry kd-tree build, high, %d thr (ms)", threads), ms(v)});
     for (auto [threads, v] : r.geometry_build_fast_ms)

@@ -341,13 +341,15 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
     SceneBenchResult out;
     out.name = c.name;
+    out.build = c.build;
     const auto kdg = c.work_dir / (c.name + ".kdg");
     const auto kdp = c.work_dir / (c.name + ".kdp");
 
     say(c, "importing " + c.card.string());
     Scene scene = load_scene_input(c.card);
     out.triangles = scene.triangles.size();
-    KdBuildParams params;  // --quality high, the default
+    KdBuildParams params = c.build;  // --quality high, the default
+    params.quality = KdBuildQuality::high;
     KdBuildParams fast = params;
     fast.quality = KdBuildQuality::fast;
 

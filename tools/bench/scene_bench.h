@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "builders/geometry/kd_build_params.h"
 #include "tools/bench/mode_frames.h"
 #include "tools/bench/photon_agreement.h"
 
@@ -25,6 +26,7 @@ struct SceneBenchConfig {
     bool peers = true;
     bool cuda = true;              // measure the CUDA backend when a device exists
     bool quiet = false;
+    KdBuildParams build;           // SAH costs of every geometry build (quality: both are built)
 };
 
 // Frame figures for one thread count (or the GPU): medians in ms.
@@ -63,6 +65,7 @@ struct PeerFigures {
 
 struct SceneBenchResult {
     std::string name;
+    KdBuildParams build;  // the SAH costs the geometry was built with
     std::uint64_t triangles = 0, photons_emitted = 0, photons_stored = 0, primary_hits = 0;
     std::map<int, double> geometry_build_ms;   // threads -> median, --quality high (the default)
     std::map<int, double> geometry_build_fast_ms;  // threads -> median, --quality fast

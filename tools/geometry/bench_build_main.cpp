@@ -14,6 +14,7 @@
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
+#include "tools/cli/sah_cost_options.h"
 
 using namespace kdpm;
 namespace fs = std::filesystem;
@@ -34,6 +35,8 @@ int main(int argc, char** argv) {
     args.option("runs", &runs, "N", "builds per scene, the median is printed (default 5)", 1, 1000)
         .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
         .positional("INPUT", &extra, "an extra scene card or mesh to time", false);
+    cli::SahCosts costs;
+    cli::add_sah_cost_options(args, costs);
     args.parse(argc, argv);
     return cli::run_tool("kdpm-bench-build", [&] {
         ThreadLimit limit(threads);
@@ -42,6 +45,9 @@ int main(int argc, char** argv) {
             {"sponza", shared_scenes() / "sponza" / "sponza.obj"},
             {"conference", shared_scenes() / "conference" / "conference.obj"}};
         if (!extra.empty()) scenes.push_back({fs::path(extra).stem().string(), extra});
+        const KdBuildParams chosen = cli::with_costs(KdBuildParams{}, costs);
+        std::printf("SAH costs: traversal %g, intersection %g, empty bonus %g\n", chosen.traversal_cost,
+                    chosen.intersection_cost, chosen.empty_bonus);
         std::printf("%-12s %-7s %10s %10s %8s %10s %6s %9s\n", "scene", "quality", "triangles", "build ms", "Mtris/s",
                     "nodes", "depth", "SAH cost");
         for (const auto& [name, path] : scenes) {
@@ -52,7 +58,7 @@ int main(int argc, char** argv) {
             }
             const Scene scene = load_scene_input(path);
             for (const KdBuildQuality quality : {KdBuildQuality::high, KdBuildQuality::fast}) {
-                KdBuildParams params;
+                KdBuildParams params = chosen;
                 params.quality = quality;
                 std::vector<double> ms;
                 KdTree tree;

@@ -13,6 +13,7 @@
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
+#include "tools/cli/sah_cost_options.h"
 
 using namespace kdpm;
 
@@ -20,17 +21,15 @@ int main(int argc, char** argv) {
     std::string input, output;
     bool quiet = false;
     int threads = 0;
-    double traversal = 1.0, intersection = 1.5, bonus = 0.2;
+    cli::SahCosts costs;
     KdBuildParams params;
     int exact_below = static_cast<int>(params.exact_below);
     cli::Args args("kdpm-build-geometry",
                    "Builds the SAH geometry kd-tree (.kdg) of a scene card (.json) or a mesh (OBJ, glTF, PLY, ...).");
     args.positional("INPUT", &input, "scene card (.json) or mesh file")
-        .option("output", &output, "FILE", "output .kdg file")
-        .option("traversal-cost", &traversal, "C", "SAH cost of an inner node step (default 1)", 0.0, 1e6)
-        .option("intersection-cost", &intersection, "C", "SAH cost of a ray/triangle test (default 1.5)", 1e-6, 1e6)
-        .option("empty-bonus", &bonus, "B", "cost reduction for splits with an empty side, 0..1 (default 0.2)", 0.0, 1.0)
-        .option("max-depth", &params.max_depth, "N", "depth limit, 0 = 8 + 1.3 log2(triangles) (default 0)", 0, 60)
+        .option("output", &output, "FILE", "output .kdg file");
+    cli::add_sah_cost_options(args, costs);
+    args.option("max-depth", &params.max_depth, "N", "depth limit, 0 = 8 + 1.3 log2(triangles) (default 0)", 0, 60)
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
         .option("quality", "fast|high",
                 "fast: binned SAH in large nodes, exact below --exact-below triangles; high: exact SAH sweep "
@@ -46,9 +45,7 @@ int main(int argc, char** argv) {
         .flag("quiet", &quiet, "print nothing but errors");
     args.short_name('o', "output");
     args.parse(argc, argv);
-    params.traversal_cost = static_cast<float>(traversal);
-    params.intersection_cost = static_cast<float>(intersection);
-    params.empty_bonus = static_cast<float>(bonus);
+    params = cli::with_costs(params, costs);
     params.exact_below = static_cast<std::uint32_t>(exact_below);
 
     return cli::run_tool("kdpm-build-geometry", [&] {

@@ -14,6 +14,7 @@
 
 #include "builders/geometry/binned_split.h"
 #include "builders/geometry/sah_cost.h"
+#include "builders/geometry/stable_radix_sort.h"
 #include "formats/repeated_triangles.h"
 #include "formats/triangle_clip.h"
 
@@ -69,6 +70,18 @@ struct Event {
 };
 
 inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
+
+// Sorts one axis' events, which arrive in triangle (local) order: a stable sort by position and
+// type then orders them as operator< does. Radix passes pay off from about a thousand events.
+void sort_events(std::vector<Event>& ev) {
+    if (ev.size() < 1024) {
+        std::sort(ev.begin(), ev.end());
+        return;
+    }
+    static_assert(32 + 2 <= kRadixKeyBits, "position and type must fit the radix key");
+    std::vector<Event> scratch;
+    stable_radix_sort(ev, scratch, [](const Event& e) { return e.bits >> 30; });
+}
 
 inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {
     for (int a = 0; a < 3; ++a) {
@@ -165,23 +178,11 @@ public:
     }
 
 private:
+    // The root's events: its triangles clipped in parallel (as a binned node keeps them), then
+    // turned into sorted events.
     void start_exact(NodeInput& root) const {
-        const AxisBox& bounds = root.cell;
-        for (auto& e : root.ev) e.reserve(2 * root.tris.size());
-        std::vector<std::uint32_t> kept;
-        kept.reserve(root.tris.size());
-        for (std::uint32_t g : root.tris) {
-            double v[3][3];
-            triangle_vertices(tris_[g], v);
-            AxisBox b;
-            if (!clip_triangle_to_box(v, bounds, b)) continue;
-            add_events(b, static_cast<std::uint32_t>(kept.size()), root.ev);
-            kept.push_back(g);
-        }
-        root.tris = std::move(kept);
-        tbb::parallel_invoke([&] { std::sort(root.ev[0].begin(), root.ev[0].end()); },
-                             [&] { std::sort(root.ev[1].begin(), root.ev[1].end()); },
-                             [&] { std::sort(root.ev[2].begin(), root.ev[2].end()); });
+        start_binned(root);
+        to_exact(root);
     }
 
     // Clips every usable triangle to the root cell in parallel; the list stays ascending.
@@ -210,7 +211,11 @@ private:
         if (!in.binned) return;
         for (auto& e : in.ev) e.reserve(2 * in.tris.size());
         for (std::size_t i = 0; i < in.boxes.size(); ++i) add_events(in.boxes[i], static_cast<std::uint32_t>(i), in.ev);
-        for (auto& e : in.ev) std::sort(e.begin(), e.end());
+        if (in.tris.size() > kParallelThreshold)
+            tbb::parallel_invoke([&] { sort_events(in.ev[0]); }, [&] { sort_events(in.ev[1]); },
+                                 [&] { sort_events(in.ev[2]); });
+        else
+            for (auto& e : in.ev) sort_events(e);
         std::vector<AxisBox>().swap(in.boxes);
         in.binned = false;
     }
@@ -403,8 +408,8 @@ private:
         for (int a = 0; a < 3; ++a) {
             std::vector<Event>& fl = scratch.fresh_l[a];
             std::vector<Event>& fr = scratch.fresh_r[a];
-            std::sort(fl.begin(), fl.end());
-            std::sort(fr.begin(), fr.end());
+            sort_events(fl);
+            sort_events(fr);
             std::vector<Event>& el = left.ev[a];
             std::vector<Event>& er = right.ev[a];
             // Each one-sided triangle has one or two events per axis: reserve for two.
@@ -498,21 +503,49 @@ private:
         return static_cast<std::uint32_t>(i);
     }
 
-    static void emit(const Piece& piece, std::vector<KdNode>& nodes, std::vector<std::uint32_t>& leaf) {
+    // Where a flat piece's nodes and leaf indices go in the file's arrays.
+    struct FlatPlace {
+        const Flat* flat;
+        std::size_t node_base, leaf_base;
+    };
+
+    // Lays the pieces out depth first: each split becomes an inner node, each flat piece gets its
+    // ranges, copied afterwards (emit) when the arrays have their final size.
+    static void place(const Piece& piece, std::vector<KdNode>& nodes, std::size_t& leaf_end,
+                      std::vector<FlatPlace>& flats) {
         if (piece.is_split) {
             const std::size_t index = nodes.size();
             nodes.push_back(KdNode{});
-            emit(*piece.below, nodes, leaf);
+            place(*piece.below, nodes, leaf_end, flats);
             nodes[index] = KdNode::inner(piece.split.axis, piece.split.pos, checked_index(nodes.size()));
-            emit(*piece.above, nodes, leaf);
+            place(*piece.above, nodes, leaf_end, flats);
             return;
         }
-        const std::size_t base = nodes.size(), leaf_base = leaf.size();
-        for (const KdNode& n : piece.flat.nodes) {
-            if (n.is_leaf()) nodes.push_back(KdNode::leaf(checked_index(n.first() + leaf_base), n.count()));
-            else nodes.push_back(KdNode::inner(n.axis(), n.split(), checked_index(n.above_child() + base)));
-        }
-        leaf.insert(leaf.end(), piece.flat.leaf.begin(), piece.flat.leaf.end());
+        flats.push_back({&piece.flat, nodes.size(), leaf_end});
+        nodes.resize(nodes.size() + piece.flat.nodes.size());
+        leaf_end += piece.flat.leaf.size();
+    }
+
+    static std::size_t node_total(const Piece& piece) {
+        return piece.is_split ? 1 + node_total(*piece.below) + node_total(*piece.above) : piece.flat.nodes.size();
+    }
+
+    // The whole tree in file layout; the flat pieces (nearly all of it) are copied in parallel.
+    static void emit(const Piece& root, std::vector<KdNode>& nodes, std::vector<std::uint32_t>& leaf) {
+        std::vector<FlatPlace> flats;
+        std::size_t leaf_end = 0;
+        nodes.reserve(node_total(root));
+        place(root, nodes, leaf_end, flats);
+        leaf.resize(leaf_end);
+        tbb::parallel_for(std::size_t{0}, flats.size(), [&](std::size_t f) {
+            const FlatPlace& at = flats[f];
+            KdNode* out = nodes.data() + at.node_base;
+            for (const KdNode& n : at.flat->nodes) {
+                *out++ = n.is_leaf() ? KdNode::leaf(checked_index(n.first() + at.leaf_base), n.count())
+                                     : KdNode::inner(n.axis(), n.split(), checked_index(n.above_child() + at.node_base));
+            }
+            std::copy(at.flat->leaf.begin(), at.flat->leaf.end(), leaf.begin() + static_cast<std::ptrdiff_t>(at.leaf_base));
+        });
     }
 
     std::span<const TriangleRecord> tris_;

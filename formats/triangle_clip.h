@@ -107,51 +107,45 @@ inline AxisBox triangle_bounds(const TriangleRecord& t) {
     return b;
 }
 
-// Conservative bounds of (triangle ∩ box), clamped to the box; false when they do not meet.
-// Points on a box face count as inside, so a triangle touching a cell "meets" it.
-//
-// Clipping a nearly flat triangle against a plane almost parallel to it is ill-conditioned:
-// in float the cut points can move by a large part of an edge and the bounds come out too
-// small (then the tree misses the triangle in a cell it crosses). So the polygon is clipped in
-// double from the exact vertices, a bound on the rounding error of every cut point is carried
-// along (large only for ill-conditioned cuts), and where it matters the result is widened by
-// it and rounded outward (see BoundRounding).
-inline bool clip_triangle_to_box(const double (&v)[3][3], const AxisBox& box, AxisBox& out) {
-    double lo[3], hi[3];
-    bool inside = true;
-    for (int a = 0; a < 3; ++a) {
-        lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
-        hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
-        if (lo[a] > box.hi[a] || hi[a] < box.lo[a]) return false;
-        inside = inside && lo[a] >= box.lo[a] && hi[a] <= box.hi[a];
-    }
-    const BoundRounding rounding = bound_rounding(v);
-    if (inside) {
-        for (int a = 0; a < 3; ++a) {
-            out.lo[a] = std::max(bound_down(lo[a], 0.0, rounding.outward[a]), box.lo[a]);
-            out.hi[a] = std::min(bound_up(hi[a], 0.0, rounding.outward[a]), box.hi[a]);
-        }
-        return true;
-    }
-    constexpr double kRound = 4.0 * 2.220446049250313e-16;  // a few double ulps per operation
-    double slack[3] = {0.0, 0.0, 0.0};                        // error bound of the points, per axis
-    // Each plane adds at most one vertex: 3 + 6.
-    double buf[2][9][3];
-    int n = 3;
-    for (int i = 0; i < 3; ++i)
-        for (int a = 0; a < 3; ++a) buf[0][i][a] = v[i][a];
+namespace clip_detail {
+
+// A polygon being clipped: the triangle cut by the planes so far, and a bound on the rounding
+// error of its points per axis.
+struct ClipPolygon {
+    double buf[2][9][3];  // the points in buf[cur]; each plane adds at most one vertex: 3 + 6
     int cur = 0;
-    for (int a = 0; a < 3 && n > 0; ++a) {
-        for (int side = 0; side < 2 && n > 0; ++side) {
+    int n = 3;
+    double slack[3] = {0.0, 0.0, 0.0};
+    const double (*points() const)[3] { return buf[cur]; }
+    // A copy of the points and their error only (what clipping goes on from).
+    ClipPolygon copy() const {
+        ClipPolygon c;
+        c.n = n;
+        for (int i = 0; i < n; ++i)
+            for (int a = 0; a < 3; ++a) c.buf[0][i][a] = buf[cur][i][a];
+        for (int a = 0; a < 3; ++a) c.slack[a] = slack[a];
+        return c;
+    }
+};
+
+// Cuts the polygon by the planes of box on axes [a_begin, a_end) (Sutherland–Hodgman), skipping
+// the planes that the triangle's bounds lo/hi do not cross.
+inline void clip_axes(ClipPolygon& poly, const AxisBox& box, const double (&lo)[3], const double (&hi)[3], int a_begin,
+                      int a_end) {
+    constexpr double kRound = 4.0 * 2.220446049250313e-16;  // a few double ulps per operation
+    for (int a = a_begin; a < a_end && poly.n > 0; ++a) {
+        for (int side = 0; side < 2 && poly.n > 0; ++side) {
             const double plane = side == 0 ? box.lo[a] : box.hi[a];
             if (side == 0 ? lo[a] >= plane : hi[a] <= plane) continue;  // nothing to cut
-            const double (*in)[3] = buf[cur];
-            double (*res)[3] = buf[cur ^ 1];
+            const double (*in)[3] = poly.buf[poly.cur];
+            double (*res)[3] = poly.buf[poly.cur ^ 1];
+            const double* slack = poly.slack;
             double new_slack[3] = {slack[0], slack[1], slack[2]};
+            const int n = poly.n;
             int m = 0;
             for (int i = 0; i < n; ++i) {
                 const double* p = in[i];
-                const double* q = in[(i + 1) % n];
+                const double* q = in[i + 1 < n ? i + 1 : 0];
                 const bool p_in = side == 0 ? p[a] >= plane : p[a] <= plane;
                 const bool q_in = side == 0 ? q[a] >= plane : q[a] <= plane;
                 if (p_in && m < 9) {
@@ -174,23 +168,116 @@ inline bool clip_triangle_to_box(const double (&v)[3][3], const AxisBox& box, Ax
                     ++m;
                 }
             }
-            for (int k = 0; k < 3; ++k) slack[k] = new_slack[k];
-            n = m;
-            cur ^= 1;
+            for (int k = 0; k < 3; ++k) poly.slack[k] = new_slack[k];
+            poly.n = m;
+            poly.cur ^= 1;
         }
     }
-    if (n == 0) return false;
+}
+
+// The float bounds of the clipped polygon, widened by its error where it matters, clamped to box.
+inline bool clipped_bounds(const ClipPolygon& poly, const AxisBox& box, const BoundRounding& rounding, AxisBox& out) {
+    if (poly.n == 0) return false;
+    const double (*p)[3] = poly.points();
     for (int a = 0; a < 3; ++a) {
-        double l = buf[cur][0][a], h = buf[cur][0][a];
-        for (int i = 1; i < n; ++i) {
-            l = std::min(l, buf[cur][i][a]);
-            h = std::max(h, buf[cur][i][a]);
+        double l = p[0][a], h = p[0][a];
+        for (int i = 1; i < poly.n; ++i) {
+            l = std::min(l, p[i][a]);
+            h = std::max(h, p[i][a]);
         }
-        out.lo[a] = std::max(bound_down(l, slack[a], rounding.outward[a]), box.lo[a]);
-        out.hi[a] = std::min(bound_up(h, slack[a], rounding.outward[a]), box.hi[a]);
+        out.lo[a] = std::max(bound_down(l, poly.slack[a], rounding.outward[a]), box.lo[a]);
+        out.hi[a] = std::min(bound_up(h, poly.slack[a], rounding.outward[a]), box.hi[a]);
         if (out.lo[a] > out.hi[a]) return false;
     }
     return true;
+}
+
+// The bounds of a triangle lying inside box (no cut needed).
+inline void inside_bounds(const double (&lo)[3], const double (&hi)[3], const AxisBox& box,
+                          const BoundRounding& rounding, AxisBox& out) {
+    for (int a = 0; a < 3; ++a) {
+        out.lo[a] = std::max(bound_down(lo[a], 0.0, rounding.outward[a]), box.lo[a]);
+        out.hi[a] = std::min(bound_up(hi[a], 0.0, rounding.outward[a]), box.hi[a]);
+    }
+}
+
+inline ClipPolygon triangle_polygon(const double (&v)[3][3]) {
+    ClipPolygon poly;
+    for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 3; ++a) poly.buf[0][i][a] = v[i][a];
+    return poly;
+}
+
+}  // namespace clip_detail
+
+// Conservative bounds of (triangle ∩ box), clamped to the box; false when they do not meet.
+// Points on a box face count as inside, so a triangle touching a cell "meets" it.
+//
+// Clipping a nearly flat triangle against a plane almost parallel to it is ill-conditioned:
+// in float the cut points can move by a large part of an edge and the bounds come out too
+// small (then the tree misses the triangle in a cell it crosses). So the polygon is clipped in
+// double from the exact vertices, a bound on the rounding error of every cut point is carried
+// along (large only for ill-conditioned cuts), and where it matters the result is widened by
+// it and rounded outward (see BoundRounding).
+inline bool clip_triangle_to_box(const double (&v)[3][3], const AxisBox& box, AxisBox& out) {
+    double lo[3], hi[3];
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
+        hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
+        if (lo[a] > box.hi[a] || hi[a] < box.lo[a]) return false;
+        inside = inside && lo[a] >= box.lo[a] && hi[a] <= box.hi[a];
+    }
+    const BoundRounding rounding = bound_rounding(v);
+    if (inside) {
+        clip_detail::inside_bounds(lo, hi, box, rounding, out);
+        return true;
+    }
+    clip_detail::ClipPolygon poly = clip_detail::triangle_polygon(v);
+    clip_detail::clip_axes(poly, box, lo, hi, 0, 3);
+    return clip_detail::clipped_bounds(poly, box, rounding, out);
+}
+
+// clip_triangle_to_box for both children of `cell` split at `pos` on `axis`, with the same
+// results; the cuts by the planes of the axes before the split axis, which the two cells share,
+// are made once.
+inline void clip_triangle_to_children(const double (&v)[3][3], const AxisBox& cell, int axis, float pos,
+                                      bool& meets_below, AxisBox& below, bool& meets_above, AxisBox& above) {
+    AxisBox below_cell = cell, above_cell = cell;
+    below_cell.hi[axis] = pos;
+    above_cell.lo[axis] = pos;
+    double lo[3], hi[3];
+    bool outside = false, inside = true;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
+        hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
+        if (a == axis) continue;
+        outside = outside || lo[a] > cell.hi[a] || hi[a] < cell.lo[a];
+        inside = inside && lo[a] >= cell.lo[a] && hi[a] <= cell.hi[a];
+    }
+    const double l = lo[axis], h = hi[axis];
+    meets_below = !outside && !(l > below_cell.hi[axis] || h < below_cell.lo[axis]);
+    meets_above = !outside && !(l > above_cell.hi[axis] || h < above_cell.lo[axis]);
+    if (!meets_below && !meets_above) return;
+    const bool inside_below = inside && l >= below_cell.lo[axis] && h <= below_cell.hi[axis];
+    const bool inside_above = inside && l >= above_cell.lo[axis] && h <= above_cell.hi[axis];
+    const BoundRounding rounding = bound_rounding(v);
+    if (meets_below && inside_below) clip_detail::inside_bounds(lo, hi, below_cell, rounding, below);
+    if (meets_above && inside_above) clip_detail::inside_bounds(lo, hi, above_cell, rounding, above);
+    const bool cut_below = meets_below && !inside_below, cut_above = meets_above && !inside_above;
+    if (!cut_below && !cut_above) return;
+    clip_detail::ClipPolygon shared = clip_detail::triangle_polygon(v);
+    clip_detail::clip_axes(shared, cell, lo, hi, 0, axis);
+    if (cut_below) {
+        clip_detail::ClipPolygon poly = cut_above ? shared.copy() : clip_detail::ClipPolygon{};
+        clip_detail::ClipPolygon& p = cut_above ? poly : shared;
+        clip_detail::clip_axes(p, below_cell, lo, hi, axis, 3);
+        meets_below = clip_detail::clipped_bounds(p, below_cell, rounding, below);
+    }
+    if (cut_above) {
+        clip_detail::clip_axes(shared, above_cell, lo, hi, axis, 3);
+        meets_above = clip_detail::clipped_bounds(shared, above_cell, rounding, above);
+    }
 }
 
 }  // namespace kdpm

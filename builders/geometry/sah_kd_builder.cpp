@@ -263,8 +263,10 @@ private:
                 } else {
                     double v[3][3];
                     triangle_vertices(tris_[in.tris[i]], v);
-                    if (clip_triangle_to_box(v, left.cell, lbox[i])) sd |= kInLeft;
-                    if (clip_triangle_to_box(v, right.cell, rbox[i])) sd |= kInRight;
+                    bool meets_left, meets_right;
+                    clip_triangle_to_children(v, in.cell, k, p, meets_left, lbox[i], meets_right, rbox[i]);
+                    if (meets_left) sd |= kInLeft;
+                    if (meets_right) sd |= kInRight;
                 }
                 if (sd == kInLeft) lbox[i] = b;
                 if (sd == kInRight) rbox[i] = b;
@@ -392,16 +394,18 @@ private:
             } else {
                 double v[3][3];
                 triangle_vertices(tris_[g], v);
-                AxisBox b;
-                if (clip_triangle_to_box(v, left.cell, b)) {
+                AxisBox lb, rb;
+                bool meets_left, meets_right;
+                clip_triangle_to_children(v, in.cell, k, p, meets_left, lb, meets_right, rb);
+                if (meets_left) {
                     lmap[i] = static_cast<std::uint32_t>(left.tris.size());
                     left.tris.push_back(g);
-                    add_events(b, lmap[i], scratch.fresh_l);
+                    add_events(lb, lmap[i], scratch.fresh_l);
                 }
-                if (clip_triangle_to_box(v, right.cell, b)) {
+                if (meets_right) {
                     rmap[i] = static_cast<std::uint32_t>(right.tris.size());
                     right.tris.push_back(g);
-                    add_events(b, rmap[i], scratch.fresh_r);
+                    add_events(rb, rmap[i], scratch.fresh_r);
                 }
             }
         }

@@ -268,16 +268,18 @@ inline void clip_triangle_to_children(const double (&v)[3][3], const AxisBox& ce
     if (!cut_below && !cut_above) return;
     clip_detail::ClipPolygon shared = clip_detail::triangle_polygon(v);
     clip_detail::clip_axes(shared, cell, lo, hi, 0, axis);
-    if (cut_below) {
-        clip_detail::ClipPolygon poly = cut_above ? shared.copy() : clip_detail::ClipPolygon{};
-        clip_detail::ClipPolygon& p = cut_above ? poly : shared;
-        clip_detail::clip_axes(p, below_cell, lo, hi, axis, 3);
-        meets_below = clip_detail::clipped_bounds(p, below_cell, rounding, below);
+    // The rest of the cuts, from the split axis on, for one child.
+    auto finish = [&](clip_detail::ClipPolygon& poly, const AxisBox& child, AxisBox& out) {
+        clip_detail::clip_axes(poly, child, lo, hi, axis, 3);
+        return clip_detail::clipped_bounds(poly, child, rounding, out);
+    };
+    if (cut_below && cut_above) {
+        clip_detail::ClipPolygon own = shared.copy();
+        meets_below = finish(own, below_cell, below);
+    } else if (cut_below) {
+        meets_below = finish(shared, below_cell, below);
     }
-    if (cut_above) {
-        clip_detail::clip_axes(shared, above_cell, lo, hi, axis, 3);
-        meets_above = clip_detail::clipped_bounds(shared, above_cell, rounding, above);
-    }
+    if (cut_above) meets_above = finish(shared, above_cell, above);
 }
 
 }  // namespace kdpm

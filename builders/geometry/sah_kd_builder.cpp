@@ -79,8 +79,7 @@ void sort_events(std::vector<Event>& ev) {
         return;
     }
     static_assert(32 + 2 <= kRadixKeyBits, "position and type must fit the radix key");
-    std::vector<Event> scratch;
-    stable_radix_sort(ev, scratch, [](const Event& e) { return e.bits >> 30; });
+    stable_radix_sort(ev, [](const Event& e) { return e.bits >> 30; });
 }
 
 inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {

@@ -13,10 +13,9 @@ namespace kdpm {
 
 inline constexpr int kRadixKeyBits = 36;
 
-// Sorts `items` stably by key(item) (a std::uint64_t below 2^kRadixKeyBits); `scratch` is reused
-// between calls.
+// Sorts `items` stably by key(item), a std::uint64_t below 2^kRadixKeyBits.
 template <class T, class Key>
-void stable_radix_sort(std::vector<T>& items, std::vector<T>& scratch, const Key& key) {
+void stable_radix_sort(std::vector<T>& items, const Key& key) {
     constexpr int kDigitBits = kRadixKeyBits / 3;
     constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
     constexpr std::uint64_t kMask = kBuckets - 1;
@@ -29,7 +28,7 @@ void stable_radix_sort(std::vector<T>& items, std::vector<T>& scratch, const Key
         ++count[kBuckets + ((k >> kDigitBits) & kMask)];
         ++count[2 * kBuckets + ((k >> (2 * kDigitBits)) & kMask)];
     }
-    scratch.resize(n);
+    std::vector<T> scratch(n);
     std::vector<T>* from = &items;
     std::vector<T>* to = &scratch;
     for (int pass = 0; pass < 3; ++pass) {

@@ -29,8 +29,7 @@ std::vector<Item> random_items(std::size_t n, std::uint64_t key_range, std::uint
 void check_sorts_like_stable_sort(std::vector<Item> items) {
     std::vector<Item> expected = items;
     std::stable_sort(expected.begin(), expected.end(), [](const Item& a, const Item& b) { return a.key < b.key; });
-    std::vector<Item> scratch;
-    stable_radix_sort(items, scratch, [](const Item& i) { return i.key; });
+    stable_radix_sort(items, [](const Item& i) { return i.key; });
     CHECK(items == expected);
 }
 

@@ -83,3 +83,24 @@ TEST_CASE("kdpm-bench and kdpm-bench-build build with the SAH costs given, and r
     const auto refused_build = test::run_shell(build_bench_command + " --empty-bonus 2");
     CHECK(refused_build.exit_code != 0);
 }
+
+TEST_CASE("kdpm-bench traces the shooting's bounce rays through kdpm and Embree to the same hits", "[tools][bench]") {
+    const auto run = test::run_tool("kdpm-bench --scenes cornell-box --frames 1 --photons 4000 --size 16 --quick --quiet "
+                                    "--repo " + test::source_path(""));
+    INFO(run.output);
+    REQUIRE(run.exit_code == 0);
+    if (run.output.find("Embree not installed") != std::string::npos) {
+        WARN("Embree 3 is not installed (Debian package libembree-dev): no bounce-ray row: skipped");
+        return;
+    }
+    // "<n> photon bounce rays (from the stored hits, path order) vs rtcIntersect1 (<fraction> same hit)"
+    const std::string row = " photon bounce rays (from the stored hits, path order) vs rtcIntersect1 (";
+    const std::size_t at = run.output.find(row);
+    REQUIRE(at != std::string::npos);
+    std::size_t line = run.output.rfind('\n', at);
+    line = line == std::string::npos ? 0 : line + 1;
+    const long rays = std::stol(run.output.substr(line, at - line));
+    const double same = std::stod(run.output.substr(at + row.size()));
+    CHECK(rays >= 2000);  // a ray per stored hit of 4000 paths in a closed box
+    CHECK(same >= 0.999);
+}

@@ -92,6 +92,11 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
         t.rows.push_back({"photon shooting, kdpm / Embree photon tracer", ms(p.kdpm_shoot_ms), ms(p.embree_shoot_ms),
                           ratio(p.kdpm_shoot_ms, p.embree_shoot_ms), "<= 1.5",
                           verdict(p.kdpm_shoot_ms <= 1.5 * p.embree_shoot_ms)});
+        // Why shooting trails: its rays, alone, against the same intersector the peer tracer uses.
+        t.rows.push_back({fmt("%llu photon bounce rays (from the stored hits, path order) vs rtcIntersect1 (%.4f same hit)",
+                              (unsigned long long)p.bounce_rays, p.bounce_ray_agreement),
+                          ms(p.kdpm_bounce_rays_ms), ms(p.embree_bounce_rays_ms),
+                          ratio(p.kdpm_bounce_rays_ms, p.embree_bounce_rays_ms), "", ""});
     } else {
         t.rows.push_back({"primary rays (Embree not installed)", ms(p.kdpm_rays_ms), "-", "-", "", ""});
         t.rows.push_back({fmt("primary rays, 4x4 packets (%.4f = single rays; Embree not installed)", p.packet_same_as_single),

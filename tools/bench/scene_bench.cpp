@@ -23,6 +23,9 @@
 #include "runtime/render/camera_packet_pass.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
+#include "runtime/shading/counter_random.h"
+#include "runtime/shading/diffuse.h"
+#include "runtime/shading/ray_offset.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/peer_embree.h"
 #include "tools/bench/peer_embree_photons.h"
@@ -63,14 +66,15 @@ FrameTable measure_frames(const SceneBenchConfig& c, Renderer& renderer, std::st
     return table;
 }
 
-struct PrimaryRays {
+// Rays traced through both intersectors, kdpm's hits, and the points they hit (camera rays).
+struct TracedRays {
     std::vector<PeerRay> rays;
     std::vector<Hit> hits;
     std::vector<float> hit_points;  // 3 floats per ray that hit something
 };
 
-PrimaryRays primary_rays(const CameraRecord& camera, std::uint32_t width, std::uint32_t height) {
-    PrimaryRays p;
+TracedRays primary_rays(const CameraRecord& camera, std::uint32_t width, std::uint32_t height) {
+    TracedRays p;
     auto cam = PinholeCamera::from_record(camera, width, height, 1);
     p.rays.resize(static_cast<std::size_t>(width) * height);
     for (std::uint32_t y = 0; y < height; ++y)
@@ -81,7 +85,7 @@ PrimaryRays primary_rays(const CameraRecord& camera, std::uint32_t width, std::u
     return p;
 }
 
-double trace_with_kdpm(const GeometryView& g, PrimaryRays& p) {
+double trace_with_kdpm(const GeometryView& g, TracedRays& p) {
     p.hits.resize(p.rays.size());
     return median_ms(1, [&] {
         cpu_parallel_for(p.rays.size(), [&](std::uint64_t i) {
@@ -107,7 +111,7 @@ double trace_packets_with_kdpm(const GeometryView& g, const PinholeCamera& camer
 // same machine; hits must agree (exact trees differ at most in ties).
 void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, const GeometryFile& high,
                        SceneBenchResult& out) {
-    PrimaryRays pf = primary_rays(fast.camera(), c.width, c.height), ph = pf;
+    TracedRays pf = primary_rays(fast.camera(), c.width, c.height), ph = pf;
     std::vector<double> fast_ms, high_ms;
     // Short passes on a drifting host: at least seven pairs, as the peer ray rows.
     for (int f = 0; f < std::max(c.frames, 7) + 1; ++f) {
@@ -125,9 +129,39 @@ void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, cons
 }
 
 #ifdef KDPM_HAVE_EMBREE
+// Fraction of rays whose hit agrees with ours: same triangle, or the same distance (ties).
+double same_hit_fraction(const std::vector<Hit>& ours, const std::vector<PeerHit>& theirs) {
+    std::size_t same = 0;
+    for (std::size_t i = 0; i < theirs.size(); ++i) {
+        bool ours_hit = ours[i].found(), theirs_hit = theirs[i].triangle != 0xffffffffu;
+        if (ours_hit == theirs_hit &&
+            (!ours_hit || ours[i].triangle == theirs[i].triangle ||
+             std::fabs(ours[i].t - theirs[i].t) <= 1e-4f * std::max(1.0f, theirs[i].t)))
+            ++same;
+    }
+    return theirs.empty() ? 1.0 : static_cast<double>(same) / theirs.size();
+}
+
+// A cosine-distributed ray leaving each stored hit on the side the photon came from, in the
+// hits' path order: the incoherent single rays photon shooting traces after a diffuse bounce.
+TracedRays bounce_rays(const std::vector<PhotonHit>& hits, float ray_offset) {
+    TracedRays b;
+    b.rays.resize(hits.size());
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+        const PhotonHit& h = hits[i];
+        const glm::vec3 n(h.normal[0], h.normal[1], h.normal[2]);
+        const glm::vec3 d = cosine_direction(n, counter_random(7, i, 0, 0), counter_random(7, i, 0, 1));
+        const glm::vec3 o = offset_origin(glm::vec3(h.position[0], h.position[1], h.position[2]), n, ray_offset, true);
+        b.rays[i] = {{o.x, o.y, o.z}, {d.x, d.y, d.z}};
+    }
+    return b;
+}
+
 // kdpm's shooter and the Embree photon tracer (the same shooter over rtcIntersect1) on the same
 // paths, runs interleaved so that both see the same machine; then whether they stored the same.
-void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, PeerFigures& peers) {
+// Then the bounce rays of kdpm's hits through both intersectors (embree: its last build).
+void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, const EmbreePeer& embree,
+                            PeerFigures& peers) {
     say(c, "Embree photon tracer: the same photon paths");
     EmbreePhotonTracer tracer(g, static_cast<int>(std::thread::hardware_concurrency()));
     ShootOptions shoot;
@@ -144,6 +178,18 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, Pe
     float extent = 0.0f;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, g.info.bounds_max[a] - g.info.bounds_min[a]);
     peers.photon_agreement = compare_photons(ours.hits, theirs.hits, 1e-5f * extent);
+
+    TracedRays b = bounce_rays(ours.hits, photon_ray_offset(g.info));
+    std::vector<PeerHit> their_hits(b.rays.size());
+    std::vector<double> ours_b, theirs_b;
+    for (int f = 0; f < std::max(c.frames, 7); ++f) {  // short passes: pairs, as the primary rays
+        ours_b.push_back(trace_with_kdpm(g, b));
+        theirs_b.push_back(median_ms(1, [&] { embree.intersect(b.rays, their_hits); }));
+    }
+    peers.bounce_rays = b.rays.size();
+    peers.kdpm_bounce_rays_ms = median_of(ours_b);
+    peers.embree_bounce_rays_ms = median_of(theirs_b);
+    peers.bounce_ray_agreement = same_hit_fraction(b.hits, their_hits);
 }
 #endif
 
@@ -156,7 +202,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
                    const KdpmStages& stages, SceneBenchResult& out) {
     const PhotonMapView& photons = maps.global;
     PeerFigures& peers = out.peers;
-    PrimaryRays p = primary_rays(geometry.camera(), c.width, c.height);
+    TracedRays p = primary_rays(geometry.camera(), c.width, c.height);
     const GeometryView& g = geometry.view();
 
     // Our rays, single and in packets: a first pass each for the hits (and to warm up); with
@@ -231,23 +277,11 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         peers.embree_rays_ms = median_of(theirs1);
         peers.kdpm_packet_rays_ms = median_of(ours16);
         peers.embree16_rays_ms = median_of(theirs16);
-        // Fraction of rays whose hit agrees with ours: same triangle, or the same distance (ties).
-        auto agreement = [&](const std::vector<PeerHit>& theirs) {
-            std::size_t same = 0;
-            for (std::size_t i = 0; i < theirs.size(); ++i) {
-                bool ours_hit = p.hits[i].found(), theirs_hit = theirs[i].triangle != 0xffffffffu;
-                if (ours_hit == theirs_hit &&
-                    (!ours_hit || p.hits[i].triangle == theirs[i].triangle ||
-                     std::fabs(p.hits[i].t - theirs[i].t) <= 1e-4f * std::max(1.0f, theirs[i].t)))
-                    ++same;
-            }
-            return theirs.empty() ? 1.0 : static_cast<double>(same) / theirs.size();
-        };
-        peers.ray_agreement = agreement(hits);
+        peers.ray_agreement = same_hit_fraction(p.hits, hits);
         // packet_hits: the same rays as 16-ray packets of 4x4 pixel tiles (row-major order).
-        peers.packet_agreement = agreement(packet_hits);
+        peers.packet_agreement = same_hit_fraction(p.hits, packet_hits);
         peers.embree = true;
-        compare_photon_tracers(c, g, peers);
+        compare_photon_tracers(c, g, embree, peers);
     }
 #endif
 

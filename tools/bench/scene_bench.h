@@ -61,6 +61,10 @@ struct PeerFigures {
     // The same photon paths through kdpm's shooter and the Embree photon tracer, all threads.
     double kdpm_shoot_ms = 0, embree_shoot_ms = 0;
     PhotonAgreement photon_agreement;
+    // Diffuse bounce rays from kdpm's stored hits, in path order (the incoherent rays shooting
+    // traces), single rays through both intersectors, all threads; and how many agree.
+    std::uint64_t bounce_rays = 0;
+    double kdpm_bounce_rays_ms = 0, embree_bounce_rays_ms = 0, bounce_ray_agreement = 0;
 };
 
 struct SceneBenchResult {

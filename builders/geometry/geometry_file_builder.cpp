@@ -72,7 +72,10 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     meta.parameters["max_depth"] = std::to_string(effective_max_depth(params, scene->triangles.size()));
     meta.parameters["leaf_size"] = std::to_string(params.leaf_size);
     meta.parameters["quality"] = std::string(quality_name(params.quality));
-    if (params.quality == KdBuildQuality::fast) meta.parameters["exact_below"] = std::to_string(params.exact_below);
+    if (params.quality == KdBuildQuality::fast) {
+        meta.parameters["exact_below"] = std::to_string(params.exact_below);
+        meta.parameters["clip_below"] = std::to_string(params.clip_below);
+    }
     const KdTreeStats& s = tree.stats;
     meta.statistics["triangles"] = static_cast<double>(scene->triangles.size());
     meta.statistics["nodes"] = static_cast<double>(s.nodes);

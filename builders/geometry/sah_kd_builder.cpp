@@ -336,11 +336,13 @@ private:
         std::vector<std::uint8_t> side;
         std::vector<std::uint32_t> lmap, rmap;
         std::vector<Event> fresh_l[3], fresh_r[3];
+        std::vector<AxisBox> box;
     };
 
     // Distributes the node's triangles and events to its children. Triangles on one side keep
-    // their (already sorted) events; straddling triangles are clipped to each child cell and
-    // their fresh events are sorted and merged in, in the same pass.
+    // their (already sorted) events; straddling triangles are clipped to each child cell (in a
+    // fast build's nodes below clip_below, their bounds are cut at the plane instead) and their
+    // fresh events are sorted and merged in, in the same pass.
     void split_node(NodeInput& in, const Split& s, NodeInput& left, NodeInput& right) const {
         if (s.empty_left || s.empty_right) {
             // What the general case below would produce, without touching the events.
@@ -358,6 +360,7 @@ private:
         const std::size_t n = in.tris.size();
         const int k = s.axis;
         const float p = s.pos;
+        const bool cut_boxes = params_.quality == KdBuildQuality::fast && n < params_.clip_below;
         std::vector<std::uint8_t>& side = scratch.side;
         side.assign(n, kBoth);
         const std::uint32_t pb = order_bits(p);
@@ -372,6 +375,19 @@ private:
         right.cell = in.cell;
         left.cell.hi[k] = p;
         right.cell.lo[k] = p;
+        // The crossing triangles' bounds as their events give them (clipped in the nodes above).
+        std::vector<AxisBox>& box = scratch.box;
+        if (cut_boxes) {
+            box.resize(n);
+            for (int a = 0; a < 3; ++a)
+                for (const Event& e : in.ev[a]) {
+                    const std::uint32_t i = e.local();
+                    if (side[i] != kBoth) continue;
+                    const EventType t = e.type();
+                    if (t != kEnd) box[i].lo[a] = e.pos();
+                    if (t != kStart) box[i].hi[a] = e.pos();
+                }
+        }
 
         std::vector<std::uint32_t>& lmap = scratch.lmap;
         std::vector<std::uint32_t>& rmap = scratch.rmap;
@@ -391,11 +407,18 @@ private:
                 rmap[i] = static_cast<std::uint32_t>(right.tris.size());
                 right.tris.push_back(g);
             } else {
-                double v[3][3];
-                triangle_vertices(tris_[g], v);
                 AxisBox lb, rb;
-                bool meets_left, meets_right;
-                clip_triangle_to_children(v, in.cell, k, p, meets_left, lb, meets_right, rb);
+                bool meets_left = true, meets_right = true;
+                if (cut_boxes) {
+                    // Conservative: the triangle may be listed in a child it only comes near.
+                    lb = rb = box[i];
+                    lb.hi[k] = p;
+                    rb.lo[k] = p;
+                } else {
+                    double v[3][3];
+                    triangle_vertices(tris_[g], v);
+                    clip_triangle_to_children(v, in.cell, k, p, meets_left, lb, meets_right, rb);
+                }
                 if (meets_left) {
                     lmap[i] = static_cast<std::uint32_t>(left.tris.size());
                     left.tris.push_back(g);

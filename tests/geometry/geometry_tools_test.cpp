@@ -85,6 +85,10 @@ TEST_CASE("kdpm-build-geometry refuses bad input with one line and writes nothin
     const auto quality = test::run_tool("kdpm-build-geometry x.obj -o y.kdg --quality best");
     CHECK(quality.exit_code == 2);
     CHECK(quality.output.find("fast or high") != std::string::npos);
+    const auto clip = test::run_tool("kdpm-build-geometry x.obj -o y.kdg --quality fast --clip-below -1");
+    CHECK(clip.exit_code == 2);
+    CHECK(one_line(clip.output));
+    CHECK(clip.output.find("clip-below") != std::string::npos);
 }
 
 TEST_CASE("kdpm-build-geometry --quality: both are exact, recorded, and identical across thread counts",
@@ -122,6 +126,17 @@ TEST_CASE("kdpm-build-geometry --quality: both are exact, recorded, and identica
         CHECK(GeometryFile::open(dir / (quality + "1.kdg")).metadata().parameters.at("quality") == quality);
     }
     CHECK(files["fast1"] != files["high1"]);
+    const Metadata fast = GeometryFile::open(dir / "fast1.kdg").metadata();
+    CHECK(fast.parameters.at("exact_below") == "512");
+    CHECK(fast.parameters.at("clip_below") == std::to_string(KdBuildParams{}.clip_below));
+    // Clipping everywhere is another tree, exact too.
+    const fs::path clipped = dir / "clipped.kdg";
+    REQUIRE(test::run_tool("kdpm-build-geometry " + mesh + " -o " + clipped.string() +
+                           " --quiet --quality fast --exact-below 512 --clip-below 0")
+                .exit_code == 0);
+    CHECK(read_bytes(clipped) != files["fast1"]);
+    CHECK(test::run_tool("kdpm-validate --exhaustive " + clipped.string()).exit_code == 0);
+    CHECK(GeometryFile::open(clipped).metadata().parameters.at("clip_below") == "0");
 }
 
 TEST_CASE("corrupt geometry files are refused", "[geometry][tools]") {

@@ -17,6 +17,15 @@ TEST_CASE("closest hits through the tree match brute force on random soups", "[g
     test::check_triangles(test::random_soup(5000, 3, 0.02f), test::random_rays(20000, 103), p);
 }
 
+TEST_CASE("a fast tree cutting boxes in every exact node still finds every closest hit", "[geometry][traversal]") {
+    // Boxes cut at the planes list triangles in leaves they only come near, never leave one out
+    // (check_triangles validates leaf coverage exhaustively too).
+    KdBuildParams p = test::quality_params(KdBuildQuality::fast);
+    p.clip_below = 1u << 30;
+    test::check_triangles(test::random_soup(1500, 2), test::random_rays(50000, 102), p);
+    test::check_triangles(test::random_soup(5000, 3, 0.02f), test::random_rays(20000, 103), p);
+}
+
 TEST_CASE("closest hits match brute force on the shipped Cornell box", "[geometry][traversal]") {
     const Scene scene = load_scene_input(test::source_path("scenes/cornell-box/cornell-box.json"));
     const auto bytes = test::build_bytes(scene);

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     cli::SahCosts costs;
     KdBuildParams params;
     int exact_below = static_cast<int>(params.exact_below);
+    int clip_below = static_cast<int>(params.clip_below);
     cli::Args args("kdpm-build-geometry",
                    "Builds the SAH geometry kd-tree (.kdg) of a scene card (.json) or a mesh (OBJ, glTF, PLY, ...).");
     args.positional("INPUT", &input, "scene card (.json) or mesh file")
@@ -32,7 +33,8 @@ int main(int argc, char** argv) {
     args.option("max-depth", &params.max_depth, "N", "depth limit, 0 = 8 + 1.3 log2(triangles) (default 0)", 0, 60)
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
         .option("quality", "fast|high",
-                "fast: binned SAH in large nodes, exact below --exact-below triangles; high: exact SAH sweep "
+                "fast: binned SAH in large nodes, exact below --exact-below triangles, crossing triangles bounded by "
+                "boxes below --clip-below; high: exact SAH sweep "
                 "with perfect splits everywhere (default high)",
                 [&](const std::string& v) {
                     const auto q = parse_quality(v);
@@ -41,12 +43,17 @@ int main(int argc, char** argv) {
                 })
         .option("exact-below", &exact_below, "N", "fast: nodes with fewer triangles use the exact sweep (default 4096)",
                 1, 1 << 30)
+        .option("clip-below", &clip_below, "N",
+                "fast: nodes with fewer triangles cut a crossing triangle's box at the split instead of clipping "
+                "the triangle, 0 = clip everywhere (default 12)",
+                0, 1 << 30)
         .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &quiet, "print nothing but errors");
     args.short_name('o', "output");
     args.parse(argc, argv);
     params = cli::with_costs(params, costs);
     params.exact_below = static_cast<std::uint32_t>(exact_below);
+    params.clip_below = static_cast<std::uint32_t>(clip_below);
 
     return cli::run_tool("kdpm-build-geometry", [&] {
         if (output.empty()) throw std::runtime_error("no output file given (-o FILE)");

@@ -11,7 +11,8 @@ namespace kdpm {
 // fast: binned SAH (Shevtsov et al. 2007; Hunt et al. 2006) in nodes of at least `exact_below`
 // triangles, binned in parallel inside the node; the exact sweep below that size, where nodes of
 // fewer than `clip_below` triangles hand a triangle that crosses the split plane to both children
-// with its bounding box (within the cell) cut at the plane instead of clipping the triangle.
+// with its bounds (as the nodes above clipped them) cut at the plane instead of clipping the
+// triangle. Binned nodes always clip.
 enum class KdBuildQuality : std::uint8_t { high, fast };
 
 std::string_view quality_name(KdBuildQuality q);
@@ -25,7 +26,7 @@ struct KdBuildParams {
     int leaf_size = 0;               // nodes with at most this many triangles become leaves unsplit
     KdBuildQuality quality = KdBuildQuality::high;
     std::uint32_t exact_below = 4096;  // fast: nodes with fewer triangles use the exact sweep
-    std::uint32_t clip_below = 12;     // fast: nodes with fewer triangles cut boxes, not triangles
+    std::uint32_t clip_below = 12;     // fast: exact-sweep nodes with fewer triangles cut boxes, not triangles
 };
 
 // The depth limit the build uses for `triangles` triangles.

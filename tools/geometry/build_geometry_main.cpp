@@ -44,8 +44,8 @@ int main(int argc, char** argv) {
         .option("exact-below", &exact_below, "N", "fast: nodes with fewer triangles use the exact sweep (default 4096)",
                 1, 1 << 30)
         .option("clip-below", &clip_below, "N",
-                "fast: nodes with fewer triangles cut a crossing triangle's box at the split instead of clipping "
-                "the triangle, 0 = clip everywhere (default 12)",
+                "fast: exact-sweep nodes with fewer triangles cut a crossing triangle's bounds at the split instead "
+                "of clipping the triangle, 0 = clip everywhere (default 12)",
                 0, 1 << 30)
         .option("threads", &threads, "N", "worker threads, 0 = all cores (default 0)", 0, 4096)
         .flag("quiet", &quiet, "print nothing but errors");

@@ -2,6 +2,8 @@
 // Median wall time of repeated runs: robust against the noise of a shared machine.
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace kdpm::bench {
@@ -22,6 +24,18 @@ inline double median_of(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];
+}
+
+// A ratio of two stages timed in pairs (each of our passes right beside the peer's): the median
+// of the per-pair ratios. The host's speed drifts by tens of percent within a run; a pair sees one
+// speed, so its ratio cancels the drift, where the ratio of the two medians can take a slow stretch
+// that fell on more of one side's passes than the other's. Pairs with a time <= 0 are skipped;
+// 0 when none is left.
+inline double median_ratio(const std::vector<double>& ours, const std::vector<double>& peer) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < ours.size() && i < peer.size(); ++i)
+        if (ours[i] > 0.0 && peer[i] > 0.0) ratios.push_back(ours[i] / peer[i]);
+    return median_of(std::move(ratios));
 }
 
 }  // namespace kdpm::bench

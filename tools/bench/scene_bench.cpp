@@ -122,6 +122,7 @@ void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, cons
     high_ms.erase(high_ms.begin());
     out.quality.fast_rays_ms = median_of(fast_ms);
     out.quality.high_rays_ms = median_of(high_ms);
+    out.quality.rays_ratio = median_ratio(fast_ms, high_ms);
     std::size_t same = 0;
     for (std::size_t i = 0; i < pf.hits.size(); ++i)
         same += pf.hits[i].found() == ph.hits[i].found() && (!pf.hits[i].found() || pf.hits[i].t == ph.hits[i].t);
@@ -175,6 +176,7 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, co
     }
     peers.kdpm_shoot_ms = median_of(ours_ms);
     peers.embree_shoot_ms = median_of(theirs_ms);
+    peers.shoot_ratio = median_ratio(ours_ms, theirs_ms);
     float extent = 0.0f;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, g.info.bounds_max[a] - g.info.bounds_min[a]);
     peers.photon_agreement = compare_photons(ours.hits, theirs.hits, 1e-5f * extent);
@@ -189,6 +191,7 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, co
     peers.bounce_rays = b.rays.size();
     peers.kdpm_bounce_rays_ms = median_of(ours_b);
     peers.embree_bounce_rays_ms = median_of(theirs_b);
+    peers.bounce_rays_ratio = median_ratio(ours_b, theirs_b);
     peers.bounce_ray_agreement = same_hit_fraction(b.hits, their_hits);
 }
 #endif
@@ -259,6 +262,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         peers.embree_build_ms = median_of(builds);
         peers.kdpm_build_ms = median_of(ours_high);
         peers.kdpm_fast_build_ms = median_of(ours_fast);
+        peers.build_ratio = median_ratio(ours_high, builds);
+        peers.fast_build_ratio = median_ratio(ours_fast, builds);
         std::vector<PeerHit> hits(p.rays.size());
         std::vector<PeerHit> packet_hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
@@ -277,6 +282,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         peers.embree_rays_ms = median_of(theirs1);
         peers.kdpm_packet_rays_ms = median_of(ours16);
         peers.embree16_rays_ms = median_of(theirs16);
+        peers.rays_ratio = median_ratio(ours1, theirs1);
+        peers.packet_ratio = median_ratio(ours16, theirs16);
         peers.ray_agreement = same_hit_fraction(p.hits, hits);
         // packet_hits: the same rays as 16-ray packets of 4x4 pixel tiles (row-major order).
         peers.packet_agreement = same_hit_fraction(p.hits, packet_hits);
@@ -343,6 +350,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         }
         peers.nanoflann_build_ms = median_of(builds);
         peers.kdpm_photon_trees_ms = median_of(ours);
+        peers.photon_trees_ratio = median_ratio(ours, builds);
         NanoflannPeer nano = peer_of(photons);
         // Each of our passes followed by nanoflann's on the same queries: a pair sees the same machine.
         for (int k : c.ks) {
@@ -354,6 +362,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             }
             peers.kdpm_knn_ms[k] = median_of(ours);
             peers.nanoflann_knn_ms[k] = median_of(theirs);
+            peers.knn_ratio[k] = median_ratio(ours, theirs);
         }
         // Cross-check on the last k: the k-th nearest distance must agree, with and without hints.
         run_ours(c.ks.back());

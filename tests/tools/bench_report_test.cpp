@@ -1,0 +1,59 @@
+// kdpm-bench's report: each target is checked where its figures are, with the verdict the issue
+// states: the report's k = 32 frame for every scene the report measured, and the paired ratios
+// (median_ratio) rather than the quotient of the medians beside them.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "tools/bench/bench_report.h"
+
+using namespace kdpm::bench;
+
+namespace {
+
+SceneBenchResult with_k32_frame(const std::string& scene, double ms) {
+    SceneBenchResult r;
+    r.name = scene;
+    FrameTable f;
+    f.label = "2 threads";
+    f.ray_tracing_ms = 20.0;
+    f.with_gather_ms[32] = ms;
+    r.frames.push_back(f);
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("kdpm-bench checks the report's k=32 frame on Sponza and on the Conference room", "[tools][bench]") {
+    const std::string conference_missed = format_report({with_k32_frame("conference", 200.0)}, true);
+    CHECK_THAT(conference_missed,
+               Catch::Contains("- ray tracing + k=32 gather, 2 threads: 200.0 ms (target <= 197 ms, the report's GPU): MISSED"));
+    const std::string conference_met = format_report({with_k32_frame("conference", 190.0)}, true);
+    CHECK_THAT(conference_met,
+               Catch::Contains("- ray tracing + k=32 gather, 2 threads: 190.0 ms (target <= 197 ms, the report's GPU): met"));
+    const std::string sponza = format_report({with_k32_frame("sponza", 150.0)}, true);
+    CHECK_THAT(sponza, Catch::Contains("150.0 ms (target <= 121 ms, the report's GPU): MISSED"));
+    // The report has no figures for the Cornell box: no target line.
+    CHECK_THAT(format_report({with_k32_frame("cornell-box", 150.0)}, true), !Catch::Contains("the report's GPU"));
+}
+
+TEST_CASE("kdpm-bench's ratio column and verdicts read the paired ratios", "[tools][bench]") {
+    SceneBenchResult r = with_k32_frame("cornell-box", 100.0);
+    PeerFigures& p = r.peers;
+    p.embree = true;
+    // Medians 30 / 20 ms (1.50x), but the pairs' own ratios have the median 0.95x.
+    p.kdpm_rays_ms = 30.0;
+    p.embree_rays_ms = 20.0;
+    p.rays_ratio = 0.95;
+    // A row whose pairs were not measured shows no verdict.
+    p.kdpm_shoot_ms = 10.0;
+    p.embree_shoot_ms = 10.0;
+    r.quality.fast_rays_ms = 11.0;
+    r.quality.high_rays_ms = 10.0;
+    r.quality.rays_ratio = 1.08;
+    const std::string out = format_report({r}, true);
+    CHECK_THAT(out, Catch::Contains("| 30.0 | 20.0 | 0.95x | <= 1 | met |"));
+    CHECK_THAT(out, Catch::Contains("| photon shooting, kdpm / Embree photon tracer | 10.0 | 10.0 | - | <= 1.5 | - |"));
+    CHECK_THAT(out, Catch::Contains("| 11.0 | 10.0 | 1.08x | <= 1.05 | MISSED |"));
+    CHECK_THAT(out, Catch::Contains("the median of the ratios of passes run in pairs"));
+}

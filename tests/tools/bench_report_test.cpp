@@ -42,15 +42,10 @@ TEST_CASE("kdpm-bench's ratio column and verdicts read the paired ratios", "[too
     PeerFigures& p = r.peers;
     p.embree = true;
     // Medians 30 / 20 ms (1.50x), but the pairs' own ratios have the median 0.95x.
-    p.kdpm_rays_ms = 30.0;
-    p.embree_rays_ms = 20.0;
-    p.rays_ratio = 0.95;
+    p.rays = {30.0, 20.0, 0.95};
     // A row whose pairs were not measured shows no verdict.
-    p.kdpm_shoot_ms = 10.0;
-    p.embree_shoot_ms = 10.0;
-    r.quality.fast_rays_ms = 11.0;
-    r.quality.high_rays_ms = 10.0;
-    r.quality.rays_ratio = 1.08;
+    p.shoot = {10.0, 10.0, 0.0};
+    r.quality.rays = {11.0, 10.0, 1.08};
     const std::string out = format_report({r}, true);
     CHECK_THAT(out, Catch::Contains("| 30.0 | 20.0 | 0.95x | <= 1 | met |"));
     CHECK_THAT(out, Catch::Contains("| photon shooting, kdpm / Embree photon tracer | 10.0 | 10.0 | - | <= 1.5 | - |"));

@@ -10,9 +10,14 @@ namespace {
 std::string ms(double v) { return v <= 0 ? "-" : v < 10 ? fmt("%.2f", v) : fmt("%.1f", v); }
 std::string ratio(double a, double b) { return (a <= 0 || b <= 0) ? "-" : fmt("%.2fx", a / b); }
 std::string verdict(bool met) { return met ? "met" : "MISSED"; }
-// A paired ratio (median_ratio) and its verdict against a target; "-" where it was not measured.
-std::string paired(double r) { return r <= 0 ? "-" : fmt("%.2fx", r); }
-std::string verdict_at(double r, double target) { return r <= 0 ? "-" : verdict(r <= target); }
+// The row of two stages timed in pairs: medians, the paired ratio, and its verdict against
+// target (none when 0); "-" for a ratio not measured.
+std::vector<std::string> paired_row(std::string label, const PairedTimes& t, double target) {
+    const std::string r = t.ratio > 0 ? fmt("%.2fx", t.ratio) : "-";
+    if (target <= 0) return {std::move(label), ms(t.ours_ms), ms(t.peer_ms), r, "", ""};
+    return {std::move(label), ms(t.ours_ms), ms(t.peer_ms), r, fmt("<= %g", target),
+            t.ratio > 0 ? verdict(t.ratio <= target) : "-"};
+}
 
 // Under a table whose timed ratios come from pairs of passes (median_ratio).
 std::string pairing_note(bool md, const char* unpaired) {
@@ -84,49 +89,36 @@ std::string peer_table(const SceneBenchResult& r, bool md) {
     const PeerFigures& p = r.peers;
     Table t{{"same inputs, all threads", "kdpm (ms)", "peer (ms)", "kdpm / peer", "target", "verdict"}, {}};
     if (p.embree) {
-        t.rows.push_back({"tree build --quality high vs Embree HQ BVH", ms(p.kdpm_build_ms), ms(p.embree_build_ms),
-                          paired(p.build_ratio), "<= 2", verdict_at(p.build_ratio, 2.0)});
-        t.rows.push_back({"tree build --quality fast vs Embree HQ BVH", ms(p.kdpm_fast_build_ms), ms(p.embree_build_ms),
-                          paired(p.fast_build_ratio), "<= 1", verdict_at(p.fast_build_ratio, 1.0)});
-        t.rows.push_back({"tree build --quality fast vs Embree MEDIUM BVH", ms(p.kdpm_fast_build_ms),
-                          ms(p.embree_medium_build_ms), ratio(p.kdpm_fast_build_ms, p.embree_medium_build_ms), "", ""});
-        t.rows.push_back({fmt("primary rays vs rtcIntersect1 (%.4f same hit)", p.ray_agreement), ms(p.kdpm_rays_ms),
-                          ms(p.embree_rays_ms), paired(p.rays_ratio), "<= 1", verdict_at(p.rays_ratio, 1.0)});
+        t.rows.push_back(paired_row("tree build --quality high vs Embree HQ BVH", p.build_high, 2.0));
+        t.rows.push_back(paired_row("tree build --quality fast vs Embree HQ BVH", p.build_fast, 1.0));
+        t.rows.push_back({"tree build --quality fast vs Embree MEDIUM BVH", ms(p.build_fast.ours_ms),
+                          ms(p.embree_medium_build_ms), ratio(p.build_fast.ours_ms, p.embree_medium_build_ms), "", ""});
+        t.rows.push_back(paired_row(fmt("primary rays vs rtcIntersect1 (%.4f same hit)", p.ray_agreement), p.rays, 1.0));
         // Packets against packets: kdpm's 4x4 packets (the renderer's camera rays on the CPU).
-        t.rows.push_back({fmt("primary rays, 4x4 packets vs rtcIntersect16 (%.4f same hit; %.4f = kdpm single rays)",
-                              p.packet_agreement, p.packet_same_as_single),
-                          ms(p.kdpm_packet_rays_ms), ms(p.embree16_rays_ms), paired(p.packet_ratio), "<= 1.5",
-                          verdict_at(p.packet_ratio, 1.5)});
-        t.rows.push_back({"photon shooting, kdpm / Embree photon tracer", ms(p.kdpm_shoot_ms), ms(p.embree_shoot_ms),
-                          paired(p.shoot_ratio), "<= 1.5", verdict_at(p.shoot_ratio, 1.5)});
+        t.rows.push_back(paired_row(fmt("primary rays, 4x4 packets vs rtcIntersect16 (%.4f same hit; %.4f = kdpm single rays)",
+                                        p.packet_agreement, p.packet_same_as_single),
+                                    p.packets, 1.5));
+        t.rows.push_back(paired_row("photon shooting, kdpm / Embree photon tracer", p.shoot, 1.5));
         // Why shooting trails: its rays, alone, against the same intersector the peer tracer uses.
-        t.rows.push_back({fmt("%llu photon bounce rays (from the stored hits, path order) vs rtcIntersect1 (%.4f same hit)",
-                              (unsigned long long)p.bounce_rays, p.bounce_ray_agreement),
-                          ms(p.kdpm_bounce_rays_ms), ms(p.embree_bounce_rays_ms),
-                          paired(p.bounce_rays_ratio), "", ""});
+        t.rows.push_back(paired_row(fmt("%llu photon bounce rays (from the stored hits, path order) vs rtcIntersect1 (%.4f same hit)",
+                                        (unsigned long long)p.bounce_rays, p.bounce_ray_agreement),
+                                    p.bounce, 0.0));
     } else {
-        t.rows.push_back({"primary rays (Embree not installed)", ms(p.kdpm_rays_ms), "-", "-", "", ""});
+        t.rows.push_back({"primary rays (Embree not installed)", ms(p.rays.ours_ms), "-", "-", "", ""});
         t.rows.push_back({fmt("primary rays, 4x4 packets (%.4f = single rays; Embree not installed)", p.packet_same_as_single),
-                          ms(p.kdpm_packet_rays_ms), "-", "-", "", ""});
+                          ms(p.packets.ours_ms), "-", "-", "", ""});
     }
     if (p.nanoflann)
-        t.rows.push_back({"VVH photon trees (global + caustic) vs nanoflann build", ms(p.kdpm_photon_trees_ms),
-                          ms(p.nanoflann_build_ms), paired(p.photon_trees_ratio), "<= 1.5",
-                          verdict_at(p.photon_trees_ratio, 1.5)});
-    for (auto [k, ours] : p.kdpm_knn_ms) {
-        auto it = p.nanoflann_knn_ms.find(k);
-        double theirs = it == p.nanoflann_knn_ms.end() ? 0.0 : it->second;
-        auto paired_k = p.knn_ratio.find(k);
-        const double knn_ratio = paired_k == p.knn_ratio.end() ? 0.0 : paired_k->second;
+        t.rows.push_back(paired_row("VVH photon trees (global + caustic) vs nanoflann build", p.photon_trees, 1.5));
+    for (const auto& [k, knn] : p.knn) {
         // Targets at the report's k = 32 and at k = 256.
-        const double target = theirs <= 0 ? 0.0 : k == 32 ? 0.5 : k == 256 ? 0.35 : 0.0;
-        t.rows.push_back({fmt("kNN k=%d at %llu primary hits vs nanoflann", k, (unsigned long long)r.primary_hits),
-                          ms(ours), ms(theirs), knn_ratio > 0 ? paired(knn_ratio) : ratio(ours, theirs),
-                          target > 0 ? fmt("<= %g", target) : "", target > 0 ? verdict_at(knn_ratio, target) : ""});
+        const double target = knn.peer_ms <= 0 ? 0.0 : k == 32 ? 0.5 : k == 256 ? 0.35 : 0.0;
+        t.rows.push_back(paired_row(fmt("kNN k=%d at %llu primary hits vs nanoflann", k, (unsigned long long)r.primary_hits),
+                                    knn, target));
         auto plain = p.kdpm_plain_knn_ms.find(k);
         if (plain != p.kdpm_plain_knn_ms.end())
             t.rows.push_back({fmt("kNN k=%d, no radius hints (each query from the root)", k), ms(plain->second),
-                              ms(theirs), ratio(plain->second, theirs), "", ""});
+                              ms(knn.peer_ms), ratio(plain->second, knn.peer_ms), "", ""});
     }
     std::string out = t.render(md);
     out += pairing_note(md, "; the MEDIUM build and no-hints rows, timed apart from their peer, show that quotient");
@@ -150,8 +142,7 @@ std::string quality_table(const SceneBenchResult& r, bool md) {
     Table t{{"geometry --quality, all threads", "fast", "high", "fast / high", "target", "verdict"}, {}};
     t.rows.push_back({"SAH cost", fmt("%.2f", q.fast_sah), fmt("%.2f", q.high_sah), ratio(q.fast_sah, q.high_sah),
                       "<= 1.05", verdict(q.fast_sah <= 1.05 * q.high_sah)});
-    t.rows.push_back({fmt("primary rays (ms; %.4f same hit distance)", q.same_hits), ms(q.fast_rays_ms),
-                      ms(q.high_rays_ms), paired(q.rays_ratio), "<= 1.05", verdict_at(q.rays_ratio, 1.05)});
+    t.rows.push_back(paired_row(fmt("primary rays (ms; %.4f same hit distance)", q.same_hits), q.rays, 1.05));
     return t.render(md) + pairing_note(md, "");
 }
 

@@ -38,4 +38,15 @@ inline double median_ratio(const std::vector<double>& ours, const std::vector<do
     return median_of(std::move(ratios));
 }
 
+// Two stages timed in pairs: each side's median time, and their ratio as median_ratio gives it
+// (what the verdicts read). A stage timed without its peer has only ours_ms.
+struct PairedTimes {
+    double ours_ms = 0, peer_ms = 0;
+    double ratio = 0;  // 0: no pair was timed
+};
+
+inline PairedTimes paired_times(const std::vector<double>& ours, const std::vector<double>& peer) {
+    return {median_of(ours), median_of(peer), median_ratio(ours, peer)};
+}
+
 }  // namespace kdpm::bench

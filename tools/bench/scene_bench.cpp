@@ -125,9 +125,7 @@ void compare_qualities(const SceneBenchConfig& c, const GeometryFile& fast, cons
     }
     fast_ms.erase(fast_ms.begin());  // warm-up
     high_ms.erase(high_ms.begin());
-    out.quality.fast_rays_ms = median_of(fast_ms);
-    out.quality.high_rays_ms = median_of(high_ms);
-    out.quality.rays_ratio = median_ratio(fast_ms, high_ms);
+    out.quality.rays = paired_times(fast_ms, high_ms);
     std::size_t same = 0;
     for (std::size_t i = 0; i < pf.hits.size(); ++i)
         same += pf.hits[i].found() == ph.hits[i].found() && (!pf.hits[i].found() || pf.hits[i].t == ph.hits[i].t);
@@ -179,9 +177,7 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, co
         ours_ms.push_back(median_ms(1, [&] { ours = shoot_photons(g, shoot); }));
         theirs_ms.push_back(median_ms(1, [&] { theirs = tracer.shoot(shoot); }));
     }
-    peers.kdpm_shoot_ms = median_of(ours_ms);
-    peers.embree_shoot_ms = median_of(theirs_ms);
-    peers.shoot_ratio = median_ratio(ours_ms, theirs_ms);
+    peers.shoot = paired_times(ours_ms, theirs_ms);
     float extent = 0.0f;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, g.info.bounds_max[a] - g.info.bounds_min[a]);
     peers.photon_agreement = compare_photons(ours.hits, theirs.hits, 1e-5f * extent);
@@ -194,9 +190,7 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, co
         theirs_b.push_back(median_ms(1, [&] { embree.intersect(b.rays, their_hits); }));
     }
     peers.bounce_rays = b.rays.size();
-    peers.kdpm_bounce_rays_ms = median_of(ours_b);
-    peers.embree_bounce_rays_ms = median_of(theirs_b);
-    peers.bounce_rays_ratio = median_ratio(ours_b, theirs_b);
+    peers.bounce = paired_times(ours_b, theirs_b);
     peers.bounce_ray_agreement = same_hit_fraction(b.hits, their_hits);
 }
 #endif
@@ -225,8 +219,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         ours.push_back(trace_with_kdpm(g, p));
         packets.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
     }
-    peers.kdpm_rays_ms = median_of(ours);
-    peers.kdpm_packet_rays_ms = median_of(packets);
+    peers.rays.ours_ms = median_of(ours);
+    peers.packets.ours_ms = median_of(packets);
 #endif
     std::size_t same_as_single = 0;
     for (std::size_t i = 0; i < kdpm_packet_hits.size(); ++i)
@@ -264,11 +258,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             ours_fast.push_back(median_ms(1, stages.build_fast));
             builds.push_back(embree.build_ms(EmbreeBuildQuality::high));
         }
-        peers.embree_build_ms = median_of(builds);
-        peers.kdpm_build_ms = median_of(ours_high);
-        peers.kdpm_fast_build_ms = median_of(ours_fast);
-        peers.build_ratio = median_ratio(ours_high, builds);
-        peers.fast_build_ratio = median_ratio(ours_fast, builds);
+        peers.build_high = paired_times(ours_high, builds);
+        peers.build_fast = paired_times(ours_fast, builds);
         std::vector<PeerHit> hits(p.rays.size());
         std::vector<PeerHit> packet_hits(p.rays.size());
         embree.intersect(p.rays, hits);  // warm-up
@@ -283,12 +274,8 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             ours16.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
             theirs16.push_back(median_ms(1, [&] { embree.intersect16(p.rays, c.width, c.height, packet_hits); }));
         }
-        peers.kdpm_rays_ms = median_of(ours1);
-        peers.embree_rays_ms = median_of(theirs1);
-        peers.kdpm_packet_rays_ms = median_of(ours16);
-        peers.embree16_rays_ms = median_of(theirs16);
-        peers.rays_ratio = median_ratio(ours1, theirs1);
-        peers.packet_ratio = median_ratio(ours16, theirs16);
+        peers.rays = paired_times(ours1, theirs1);
+        peers.packets = paired_times(ours16, theirs16);
         peers.ray_agreement = same_hit_fraction(p.hits, hits);
         // packet_hits: the same rays as 16-ray packets of 4x4 pixel tiles (row-major order).
         peers.packet_agreement = same_hit_fraction(p.hits, packet_hits);
@@ -336,7 +323,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
 #endif
     for (int k : c.ks) {
         run_ours(k);
-        if (!paired_knn) peers.kdpm_knn_ms[k] = median_ms(c.frames, [&] { run_ours(k); });
+        if (!paired_knn) peers.knn[k].ours_ms = median_ms(c.frames, [&] { run_ours(k); });
         peers.kdpm_plain_knn_ms[k] = median_ms(c.frames, [&] { run_plain(k); });
     }
 #ifdef KDPM_HAVE_NANOFLANN
@@ -353,9 +340,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
             if (maps.caustic.photon_count > 0) ms += peer_of(maps.caustic).build_ms();
             builds.push_back(ms);
         }
-        peers.nanoflann_build_ms = median_of(builds);
-        peers.kdpm_photon_trees_ms = median_of(ours);
-        peers.photon_trees_ratio = median_ratio(ours, builds);
+        peers.photon_trees = paired_times(ours, builds);
         NanoflannPeer nano = peer_of(photons);
         // Each of our passes followed by nanoflann's on the same queries: a pair sees the same machine.
         for (int k : c.ks) {
@@ -365,9 +350,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
                 ours.push_back(median_ms(1, [&] { run_ours(k); }));
                 theirs.push_back(median_ms(1, [&] { nano.knn(p.hit_points, k, theirs_kth); }));
             }
-            peers.kdpm_knn_ms[k] = median_of(ours);
-            peers.nanoflann_knn_ms[k] = median_of(theirs);
-            peers.knn_ratio[k] = median_ratio(ours, theirs);
+            peers.knn[k] = paired_times(ours, theirs);
         }
         // Cross-check on the last k: the k-th nearest distance must agree, with and without hints.
         run_ours(c.ks.back());
@@ -474,9 +457,9 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
         out.mode_frames = measure_mode_frames(loaded.views(), modes);
     }
     const int all = c.threads.back();
-    out.peers.kdpm_build_ms = out.geometry_build_ms[all];
-    out.peers.kdpm_fast_build_ms = out.geometry_build_fast_ms[all];
-    out.peers.kdpm_photon_trees_ms = out.photon_tree_ms[all];
+    out.peers.build_high.ours_ms = out.geometry_build_ms[all];
+    out.peers.build_fast.ours_ms = out.geometry_build_fast_ms[all];
+    out.peers.photon_trees.ours_ms = out.photon_tree_ms[all];
     if (c.peers) {
         // The peers time these again beside their own (all threads), replacing the figures above.
         ThreadLimit limit(all);

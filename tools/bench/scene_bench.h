@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "builders/geometry/kd_build_params.h"
+#include "tools/bench/median_time.h"
 #include "tools/bench/mode_frames.h"
 #include "tools/bench/photon_agreement.h"
 
@@ -39,40 +40,33 @@ struct FrameTable {
 // kdpm's two geometry build qualities on the same scene (high is the default and the .kdg used).
 struct QualityFigures {
     double fast_sah = 0, high_sah = 0;          // SAH cost of the trees
-    double fast_rays_ms = 0, high_rays_ms = 0;  // same primary rays, all threads, medians
-    double rays_ratio = 0;                      // fast / high: median of the passes' pairs (median_ratio)
+    PairedTimes rays;                           // same primary rays, all threads; ours: fast, peer: high
     double same_hits = 0;                       // fraction of those rays with the same hit distance
 };
 
-// Times are medians; a stage timed in pairs beside its peer has its ratio as the median of the
-// pairs' ratios too (median_ratio), which the verdicts read.
+// kdpm's stages beside their peers, all threads: PairedTimes where timed in pairs.
 struct PeerFigures {
     bool embree = false, nanoflann = false;
-    double embree_build_ms = 0, kdpm_build_ms = 0;        // all threads; kdpm: --quality high
-    double embree_medium_build_ms = 0, kdpm_fast_build_ms = 0;  // Embree MEDIUM; kdpm --quality fast
-    double build_ratio = 0, fast_build_ratio = 0;         // kdpm high, fast / Embree HQ, paired
-    double nanoflann_build_ms = 0, kdpm_photon_trees_ms = 0;    // global + caustic trees, same photons
-    double photon_trees_ratio = 0;                        // paired
-    double embree_rays_ms = 0, kdpm_rays_ms = 0;          // same primary rays, all threads
-    double kdpm_packet_rays_ms = 0;                       // the same rays as kdpm's 4x4-pixel packets
+    PairedTimes build_high, build_fast;                   // kdpm --quality high, fast / Embree HQ BVH
+    double embree_medium_build_ms = 0;                    // Embree MEDIUM, timed on its own
+    PairedTimes photon_trees;                             // global + caustic trees / nanoflann, same photons
+    PairedTimes rays;                                     // same primary rays / rtcIntersect1
+    PairedTimes packets;                                  // the same rays as kdpm's 4x4-pixel packets / rtcIntersect16
     double packet_same_as_single = 0;                     // fraction of packet hits equal to the single-ray hits, bit for bit
     double ray_agreement = 0;                             // fraction of rays with the same hit triangle
-    double embree16_rays_ms = 0;                          // rtcIntersect16, 4x4-pixel packets, same rays
-    double rays_ratio = 0, packet_ratio = 0;              // single / rtcIntersect1, packets / rtcIntersect16, paired
     double packet_agreement = 0;                          // the same for the packets' hits
-    std::map<int, double> nanoflann_knn_ms, kdpm_knn_ms;  // same queries and photons, all threads
-    std::map<int, double> knn_ratio;                      // paired
+    std::map<int, PairedTimes> knn;                       // k -> same queries and photons / nanoflann
     std::map<int, double> kdpm_plain_knn_ms;              // kdpm without radius hints: each query from the root
     double knn_agreement = 0;                             // fraction of queries with the same k-th distance
     double plain_knn_agreement = 0;                       // the same, without radius hints
     // The same photon paths through kdpm's shooter and the Embree photon tracer, all threads.
-    double kdpm_shoot_ms = 0, embree_shoot_ms = 0, shoot_ratio = 0;  // ratio paired
+    PairedTimes shoot;
     PhotonAgreement photon_agreement;
     // Diffuse bounce rays from kdpm's stored hits, in path order (the incoherent rays shooting
     // traces), single rays through both intersectors, all threads; and how many agree.
     std::uint64_t bounce_rays = 0;
-    double kdpm_bounce_rays_ms = 0, embree_bounce_rays_ms = 0, bounce_ray_agreement = 0;
-    double bounce_rays_ratio = 0;  // paired
+    PairedTimes bounce;  // / rtcIntersect1
+    double bounce_ray_agreement = 0;
 };
 
 struct SceneBenchResult {

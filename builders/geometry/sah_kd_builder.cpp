@@ -14,8 +14,8 @@
 
 #include "builders/geometry/binned_split.h"
 #include "builders/geometry/sah_cost.h"
-#include "builders/geometry/stable_radix_sort.h"
 #include "formats/repeated_triangles.h"
+#include "formats/stable_radix_sort.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "builders/geometry/stable_radix_sort.h"
+#include "formats/stable_radix_sort.h"
 
 using namespace kdpm;
 

@@ -1,9 +1,10 @@
 #pragma once
 // A stable LSD radix sort by a key of at most 36 bits, in three passes of up to 12-bit digits.
-// The builder sorts a node's split events by position and type (34 bits) while they already
-// arrive in triangle order: stability then yields exactly what std::sort by the whole event
-// gives, in a few linear passes instead of n log n compares (the root's sort was half of the
-// serial start of a build).
+// The geometry builder sorts a node's split events by position and type (34 bits) while they
+// already arrive in triangle order: stability then yields exactly what std::sort by the whole
+// event gives, in a few linear passes instead of n log n compares (the root's sort was half of
+// the serial start of a build). The CPU photon shooter orders each wave of rays by a 30-bit
+// key of origin and direction, ties in path order.
 #include <cstddef>
 #include <cstdint>
 #include <utility>

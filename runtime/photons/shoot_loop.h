@@ -1,9 +1,10 @@
 #pragma once
-// Photon shooting written once for both backends: batches of paths, each path traced by
-// trace_photon_path into its own fixed max_bounces + 1 slots (ShootPathsPass, the kernel), then
-// the slots copied to the host and compacted in path order. The hits are therefore the same
-// whatever the thread count or the backend runs the paths -- up to floating point: see
-// photon_shooter.h for where the CUDA build can differ.
+// Photon shooting written once for both backends: batches of paths, each path traced into its
+// own fixed max_bounces + 1 slots, then the slots copied to the host and compacted in path order.
+// A batch's paths are traced depth first, one work item per path (ShootPathsPass, the kernel),
+// or on the CPU in sorted waves (shoot_waves.h), which gives the same hits faster. The hits are
+// therefore the same whatever the thread count, the order or the backend runs the paths -- up to
+// floating point: see photon_shooter.h for where the CUDA build can differ.
 // `Device` is CpuDevice or CudaDevice (scratch<T>(n), launch(n, pass), to_host, begin).
 #include <algorithm>
 #include <cstdint>
@@ -15,9 +16,15 @@
 #include "runtime/backend/items_on_host.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/photons/photon_path.h"
+#include "runtime/photons/shoot_waves.h"
 #include "runtime/shading/area_light.h"
 
 namespace kdpm {
+
+// How a batch's paths are traced: each path to its end before the next (GPUs, and peers whose
+// intersector prefers it), or all of them a ray at a time in sorted waves (host-memory devices
+// only; elsewhere depth first).
+enum class PathOrder : std::uint8_t { depth_first, sorted_waves };
 
 // One work item per path of the batch starting at path `first`.
 template <class ClosestHit = KdTreeClosestHit>
@@ -50,7 +57,8 @@ template <class Device, class ClosestHit = KdTreeClosestHit>
 std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                           const ShootSettings& settings, std::uint64_t first_path, std::uint64_t end_path,
                           std::uint64_t batch, std::vector<PhotonHit>& hits,
-                          const std::function<void(double)>& progress, const ClosestHit& intersect = ClosestHit{}) {
+                          const std::function<void(double)>& progress, const ClosestHit& intersect = ClosestHit{},
+                          PathOrder order = PathOrder::depth_first) {
     const std::uint64_t per_path = static_cast<std::uint64_t>(settings.max_bounces) + 1;
     std::uint64_t rays = 0;
     std::vector<PhotonHit> batch_hits;
@@ -62,7 +70,16 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         // Every path writes its result; slots past a path's `stored` are never read.
         auto slots = dev.template scratch<PhotonHit>(n * per_path);
         auto results = dev.template scratch<PhotonPathResult>(n);
-        dev.launch(n, ShootPathsPass<ClosestHit>{geometry, lights, settings, first, slots.data(), results.data(), intersect});
+        bool in_waves = false;
+        if constexpr (requires { requires Device::arrays_on_host; }) {
+            if (order == PathOrder::sorted_waves) {
+                shoot_batch_in_waves(dev, geometry, lights, settings, first, n, slots.data(), results.data(), intersect);
+                in_waves = true;
+            }
+        }
+        if (!in_waves)
+            dev.launch(n, ShootPathsPass<ClosestHit>{geometry, lights, settings, first, slots.data(), results.data(),
+                                                     intersect});
         const PhotonHit* slot_items = items_on_host(dev, slots, batch_hits);
         const PhotonPathResult* result_items = items_on_host(dev, results, batch_results);
         // Room for this batch and, at the rate stored so far, for the batches to come (at least a

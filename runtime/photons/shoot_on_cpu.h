@@ -1,7 +1,8 @@
 #pragma once
 // shoot_photons' CPU half with the closest-hit query as a parameter: the same checks, light
 // table, settings, batches, launch grain and summary as shoot_photons, so that a peer which
-// swaps in another intersector (kdpm-bench's Embree photon tracer) differs in nothing else.
+// swaps in another intersector (kdpm-bench's Embree photon tracer) differs in nothing else but
+// the path order it is fastest with.
 #include <cstdint>
 #include <functional>
 
@@ -27,19 +28,22 @@ ShootPlan plan_shooting(const GeometryView& g, const ShootOptions& options);
 // Fills shot.info (emitted count and power, bounce limit, stored and caustic counts, bounds).
 void summarize_shot(const GeometryView& g, const ShootOptions& options, ShotPhotons& shot);
 
-// CPU batches: 64 Ki paths, or fewer when their slots would pass 256 MiB.
+// CPU batches: 256 Ki paths, or fewer when their slots would pass 256 MiB. Large, because a
+// wave's rays are the more alike the more of them are sorted together.
 inline std::uint64_t cpu_shoot_batch_size(std::uint32_t max_bounces) {
-    return shoot_batch_size(max_bounces, 1u << 16, 256u << 20);
+    return shoot_batch_size(max_bounces, 1u << 18, 256u << 20);
 }
 
+// kdpm shoots in sorted waves; a peer passes the order that is fastest for its intersector.
 template <class ClosestHit = KdTreeClosestHit>
 ShotPhotons shoot_photons_on_cpu(const GeometryView& g, const ShootOptions& options, const ClosestHit& intersect = {},
-                                 const std::function<void(double)>& progress = {}) {
+                                 const std::function<void(double)>& progress = {},
+                                 PathOrder order = PathOrder::sorted_waves) {
     const ShootPlan plan = plan_shooting(g, options);
     ShotPhotons shot;
     CpuDevice device;
     shot.rays = shoot_paths(device, g, plan.lights.selection(), plan.settings, plan.first_path, plan.end_path,
-                            cpu_shoot_batch_size(options.max_bounces), shot.hits, progress, intersect);
+                            cpu_shoot_batch_size(options.max_bounces), shot.hits, progress, intersect, order);
     summarize_shot(g, options, shot);
     return shot;
 }

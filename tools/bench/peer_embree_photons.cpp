@@ -87,7 +87,7 @@ EmbreePhotonTracer::EmbreePhotonTracer(const GeometryView& g, int threads) : sta
 EmbreePhotonTracer::~EmbreePhotonTracer() = default;
 
 ShotPhotons EmbreePhotonTracer::shoot(const ShootOptions& options) const {
-    return shoot_photons_on_cpu(state_->geometry, options, EmbreeClosestHit{state_->scene});
+    return shoot_photons_on_cpu(state_->geometry, options, EmbreeClosestHit{state_->scene}, {}, PathOrder::depth_first);
 }
 
 }  // namespace kdpm::bench

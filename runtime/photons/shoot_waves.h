@@ -1,0 +1,160 @@
+#pragma once
+// CPU photon shooting one ray at a time over all the live paths of a batch ("waves"), each
+// wave's rays sorted by where they start and where they go. Traced one path after another,
+// consecutive rays start anywhere and walk different parts of the kd-tree, so nearly every node
+// step waits on memory; sorted, neighbouring rays walk the same nodes (one thread, Sponza's
+// 481,430 bounce rays: 0.54x the time of the same rays shuffled). A path is a pure function of
+// its index (photon_path.h) and each wave moves every path by exactly one step, so the hits are
+// those of trace_photon_path, whatever the order, batch size or thread count.
+// Host memory only (CpuDevice): the sort and the compaction run on the calling thread.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "formats/photon_layout.h"
+#include "formats/stable_radix_sort.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/photons/photon_path.h"
+#include "runtime/shading/area_light.h"
+
+namespace kdpm {
+
+namespace shoot_waves_detail {
+
+// A live path's place in a wave: its sort key and its slot in the wave's state array.
+struct WaveRank {
+    std::uint32_t key;
+    std::uint32_t slot;
+};
+
+// 30 bits: 5 of each coordinate of the origin (within the scene bounds) and of the direction,
+// interleaved from the most significant down, so that rays close in both come out together.
+struct WaveKey {
+    glm::vec3 low{0.0f}, scale{0.0f};  // origin cell = (origin - low) * scale, in [0, 32)
+
+    explicit WaveKey(const GeometryInfo& info) {
+        for (int a = 0; a < 3; ++a) {
+            const float extent = info.bounds_max[a] - info.bounds_min[a];
+            low[a] = info.bounds_min[a];
+            scale[a] = extent > 0.0f ? 32.0f / extent : 0.0f;
+        }
+    }
+    // 0..31; NaN and values outside go to the nearest end.
+    static std::uint32_t cell(float f) { return f > 0.0f ? (f < 31.0f ? static_cast<std::uint32_t>(f) : 31u) : 0u; }
+    std::uint32_t operator()(const PhotonPathState& st) const {
+        const std::uint32_t c[6] = {cell((st.origin.x - low.x) * scale.x), cell((st.origin.y - low.y) * scale.y),
+                                    cell((st.origin.z - low.z) * scale.z), cell((st.direction.x + 1.0f) * 16.0f),
+                                    cell((st.direction.y + 1.0f) * 16.0f), cell((st.direction.z + 1.0f) * 16.0f)};
+        std::uint32_t key = 0;
+        for (int bit = 4; bit >= 0; --bit)
+            for (int a = 0; a < 6; ++a) key = key << 1 | ((c[a] >> bit) & 1u);
+        return key;
+    }
+};
+
+struct WaveStartPass {
+    GeometryView geometry;
+    LightSelection lights;
+    ShootSettings settings;
+    std::uint64_t first = 0;
+    PhotonPathState* live = nullptr;
+    PhotonPathResult* results = nullptr;
+    void operator()(std::uint64_t i) const {
+        live[i] = start_photon_path(geometry, lights, settings, first + i);
+        results[i] = PhotonPathResult{};
+    }
+};
+
+struct WaveKeyPass {
+    WaveKey key;
+    const PhotonPathState* live = nullptr;
+    WaveRank* ranks = nullptr;
+    void operator()(std::uint64_t j) const { ranks[j] = WaveRank{key(live[j]), static_cast<std::uint32_t>(j)}; }
+};
+
+// The wave's states in ray order, read apart from the walk so that its scattered loads do not
+// interleave with the tree's.
+struct WaveGatherPass {
+    const PhotonPathState* live = nullptr;
+    const WaveRank* ranks = nullptr;
+    PhotonPathState* sorted = nullptr;
+    void operator()(std::uint64_t j) const { sorted[j] = live[ranks[j].slot]; }
+};
+
+// One ray of each path, in ray order: the hit's stored photon (if any) to wave_hits[j], and
+// fate[j] = bit 0: stored, bit 1: the path goes on (sorted[j] is then its next state).
+inline constexpr std::uint8_t kWaveStored = 1, kWaveGoesOn = 2;
+template <class ClosestHit>
+struct WaveStepPass {
+    GeometryView geometry;
+    ShootSettings settings;
+    PhotonPathState* sorted = nullptr;
+    PhotonHit* wave_hits = nullptr;
+    std::uint8_t* fate = nullptr;
+    ClosestHit intersect{};
+    void operator()(std::uint64_t j) const {
+        PhotonPathState& st = sorted[j];
+        const Hit hit = intersect(geometry, next_photon_ray(st));
+        bool stored = false;
+        const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stored);
+        fate[j] = static_cast<std::uint8_t>((stored ? kWaveStored : 0) | (goes_on ? kWaveGoesOn : 0));
+    }
+};
+
+// Each path's ray counted and its photon put in the path's next slot: a path has one ray per
+// wave, so its photons arrive in the order trace_photon_path stores them.
+struct WaveStorePass {
+    std::uint64_t first = 0;
+    std::uint64_t per_path = 0;
+    const PhotonPathState* sorted = nullptr;
+    const PhotonHit* wave_hits = nullptr;
+    const std::uint8_t* fate = nullptr;
+    PhotonHit* slots = nullptr;
+    PhotonPathResult* results = nullptr;
+    void operator()(std::uint64_t j) const {
+        const std::uint64_t i = sorted[j].path - first;
+        PhotonPathResult& r = results[i];
+        ++r.rays;
+        if (fate[j] & kWaveStored) slots[i * per_path + r.stored++] = wave_hits[j];
+    }
+};
+
+}  // namespace shoot_waves_detail
+
+// Paths first .. first + n - 1 into slots (max_bounces + 1 per path) and results, as n work
+// items of ShootPathsPass would write them. `dev` runs the passes (a CpuDevice).
+template <class Device, class ClosestHit>
+void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const LightSelection& lights,
+                          const ShootSettings& settings, std::uint64_t first, std::uint64_t n, PhotonHit* slots,
+                          PhotonPathResult* results, const ClosestHit& intersect) {
+    using namespace shoot_waves_detail;
+    static_assert(Device::arrays_on_host, "waves sort and compact on the host");
+    if (lights.count == 0 || !(lights.total_power > 0.0f) || settings.emitted_count == 0) {
+        for (std::uint64_t i = 0; i < n; ++i) results[i] = PhotonPathResult{};  // as trace_photon_path
+        return;
+    }
+    std::vector<PhotonPathState> live(n), sorted(n);
+    std::vector<PhotonHit> wave_hits(n);
+    std::vector<std::uint8_t> fate(n);
+    std::vector<WaveRank> ranks;
+    dev.launch(n, WaveStartPass{geometry, lights, settings, first, live.data(), results});
+    const WaveKey key(geometry.info);
+    for (std::uint64_t m = n; m > 0;) {
+        ranks.resize(m);
+        dev.launch(m, WaveKeyPass{key, live.data(), ranks.data()});
+        // Stable: equal keys keep the previous wave's order, so the order is the same every run.
+        stable_radix_sort(ranks, [](const WaveRank& r) { return static_cast<std::uint64_t>(r.key); });
+        dev.launch(m, WaveGatherPass{live.data(), ranks.data(), sorted.data()});
+        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, sorted.data(), wave_hits.data(), fate.data(),
+                                               intersect});
+        dev.launch(m, WaveStorePass{first, settings.max_bounces + std::uint64_t{1}, sorted.data(), wave_hits.data(),
+                                    fate.data(), slots, results});
+        std::uint64_t going_on = 0;
+        for (std::uint64_t j = 0; j < m; ++j)
+            if (fate[j] & kWaveGoesOn) live[going_on++] = sorted[j];
+        m = going_on;
+    }
+}
+
+}  // namespace kdpm

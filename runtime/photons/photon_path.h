@@ -58,12 +58,15 @@ struct KdTreeClosestHit {
     KDPM_HD KDPM_INLINE Hit operator()(const GeometryView& g, const Ray& ray) const { return closest_hit(g, ray); }
 };
 
-// A path between two rays: where its next ray starts and goes, and the power it carries.
+// A path between two rays: where its next ray starts and goes, and the power it carries. Plain
+// data without initialisers (start_photon_path sets every field), so that a wave's arrays of
+// them are not cleared before they are written.
 struct PhotonPathState {
-    glm::vec3 origin{0.0f}, direction{0.0f}, power{0.0f};
-    std::uint64_t path = 0;
-    std::uint32_t bounce = 0;        // of the next hit
-    std::uint32_t specular_only = 1;  // no diffuse hit yet: a diffuse hit after bounce 0 is caustic
+    glm::vec3 origin, direction, power;
+    std::uint64_t path;
+    std::uint32_t bounce;         // of the next hit
+    std::uint16_t stored;         // hits stored so far (at most max_bounces + 1 <= 256)
+    std::uint16_t specular_only;  // no diffuse hit yet: a diffuse hit after bounce 0 is caustic
 };
 
 // Emission of path `path` (bounce stream 0, dimensions 0..4). lights.count > 0, its power > 0.
@@ -75,6 +78,9 @@ KDPM_HD inline PhotonPathState start_photon_path(const GeometryView& g, const Li
     const float u1 = rnd(1), u2 = rnd(2);
     PhotonPathState st;
     st.path = path;
+    st.bounce = 0;
+    st.stored = 0;
+    st.specular_only = 1;
     st.direction = cosine_direction(emit_normal, rnd(3), rnd(4));
     st.origin = offset_origin(point_on_light(light, u1, u2), emit_normal, s.ray_offset, true);
     // Flux pi A L of this light over the probability of choosing it, shared by N paths. (The

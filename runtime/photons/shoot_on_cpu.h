@@ -34,11 +34,12 @@ inline std::uint64_t cpu_shoot_batch_size(std::uint32_t max_bounces) {
     return shoot_batch_size(max_bounces, 1u << 18, 256u << 20);
 }
 
-// kdpm shoots in sorted waves; a peer passes the order that is fastest for its intersector.
+// kdpm picks its order by the scene's size; a peer passes the order that is fastest for its
+// intersector.
 template <class ClosestHit = KdTreeClosestHit>
 ShotPhotons shoot_photons_on_cpu(const GeometryView& g, const ShootOptions& options, const ClosestHit& intersect = {},
                                  const std::function<void(double)>& progress = {},
-                                 PathOrder order = PathOrder::sorted_waves) {
+                                 PathOrder order = PathOrder::by_scene_size) {
     const ShootPlan plan = plan_shooting(g, options);
     ShotPhotons shot;
     CpuDevice device;

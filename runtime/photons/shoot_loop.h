@@ -23,21 +23,8 @@ namespace kdpm {
 
 // How a batch's paths are traced: each path to its end before the next (GPUs, and peers whose
 // intersector prefers it), or all of them a ray at a time in sorted waves (host-memory devices
-// only; elsewhere depth first), or the faster of the two for the scene's size (by_scene_size).
-enum class PathOrder : std::uint8_t { depth_first, sorted_waves, by_scene_size };
-
-// Sorted waves pay off once the walk's arrays outgrow a core's cache, where consecutive
-// incoherent rays wait on memory (two threads: Sponza's 12 MB and the Conference room's 33 MB
-// shoot in 0.86-0.89x the time). Below that the sort and the extra passes are pure cost (the
-// Cornell box, a few KB: 1.09x), so small scenes go depth first.
-inline constexpr std::uint64_t kWaveSceneBytes = std::uint64_t{1} << 20;
-inline PathOrder resolve_path_order(PathOrder order, const GeometryView& g) {
-    if (order != PathOrder::by_scene_size) return order;
-    const std::uint64_t bytes = std::uint64_t{g.node_count} * sizeof(KdNode) +
-                                std::uint64_t{g.leaf_index_count} * sizeof(std::uint32_t) +
-                                std::uint64_t{g.triangle_count} * sizeof(TriangleRecord);
-    return bytes > kWaveSceneBytes ? PathOrder::sorted_waves : PathOrder::depth_first;
-}
+// only; elsewhere depth first).
+enum class PathOrder : std::uint8_t { depth_first, sorted_waves };
 
 // One work item per path of the batch starting at path `first`.
 template <class ClosestHit = KdTreeClosestHit>
@@ -85,7 +72,7 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         auto results = dev.template scratch<PhotonPathResult>(n);
         bool in_waves = false;
         if constexpr (requires { requires Device::arrays_on_host; }) {
-            if (resolve_path_order(order, geometry) == PathOrder::sorted_waves) {
+            if (order == PathOrder::sorted_waves) {
                 shoot_batch_in_waves(dev, geometry, lights, settings, first, n, slots.data(), results.data(), intersect);
                 in_waves = true;
             }

@@ -68,7 +68,7 @@ void run_sppm(Device& dev, const GeometryView& geometry, const LightSelection& l
         hits.clear();
         shoot.seed = pass;
         shoot_paths(pass_dev, geometry, lights, shoot, 0, sppm.photons_per_pass, batch, hits, {}, KdTreeClosestHit{},
-                    PathOrder::by_scene_size);  // depth first where the device is not the CPU
+                    PathOrder::sorted_waves);  // depth first where the device is not the CPU
         times.shading_ms += watch.lap_ms();  // photon shooting: this mode's "shading" row
         SppmPhotonGrid grid = build_sppm_photon_grid(hits, 1, sppm.max_photon_bounce, cell);
         pass_dev.begin();

@@ -71,33 +71,19 @@ TEST_CASE("sorted waves store the photons of depth-first paths", "[photons][shoo
     }
 }
 
-TEST_CASE("the CPU shooter picks sorted waves for scenes larger than a core's cache", "[photons][shoot]") {
+TEST_CASE("the CPU shooter's default order gives the depth-first photons", "[photons][shoot]") {
     auto scene = test::closed_box_with_glass_cube(0.7f);
-    const GeometryView small = scene.view();
-    CHECK(resolve_path_order(PathOrder::by_scene_size, small) == PathOrder::depth_first);
-    CHECK(resolve_path_order(PathOrder::sorted_waves, small) == PathOrder::sorted_waves);
-    GeometryView large = small;  // only the sizes are read
-    large.node_count = 200000;   // 1.6 MB of nodes
-    CHECK(resolve_path_order(PathOrder::by_scene_size, large) == PathOrder::sorted_waves);
-    CHECK(resolve_path_order(PathOrder::depth_first, large) == PathOrder::depth_first);
-    large.node_count = 1000;
-    large.triangle_count = 30000;  // 1.4 MB of triangles
-    CHECK(resolve_path_order(PathOrder::by_scene_size, large) == PathOrder::sorted_waves);
-
-    // Whatever it picks, the photons are the depth-first ones.
+    const GeometryView g = scene.view();
     ShootOptions options;
     options.photons = 6000;
     options.max_bounces = 5;
     options.seed = 11;
-    const ShotPhotons picked = shoot_photons_on_cpu(small, options);
-    const ShotPhotons waves = shoot_photons_on_cpu(small, options, KdTreeClosestHit{}, {}, PathOrder::sorted_waves);
-    const ShotPhotons depth_first = shoot_photons_on_cpu(small, options, KdTreeClosestHit{}, {}, PathOrder::depth_first);
-    for (const ShotPhotons* shot : {&picked, &waves}) {
-        CHECK(shot->rays == depth_first.rays);
-        REQUIRE(shot->hits.size() == depth_first.hits.size());
-        CHECK(std::memcmp(shot->hits.data(), depth_first.hits.data(), depth_first.hits.size() * sizeof(PhotonHit)) == 0);
-        CHECK(shot->info.stored_count == depth_first.info.stored_count);
-    }
+    const ShotPhotons picked = shoot_photons_on_cpu(g, options);
+    const ShotPhotons depth_first = shoot_photons_on_cpu(g, options, KdTreeClosestHit{}, {}, PathOrder::depth_first);
+    CHECK(picked.rays == depth_first.rays);
+    REQUIRE(picked.hits.size() == depth_first.hits.size());
+    CHECK(std::memcmp(picked.hits.data(), depth_first.hits.data(), depth_first.hits.size() * sizeof(PhotonHit)) == 0);
+    CHECK(picked.info.stored_count == depth_first.info.stored_count);
 }
 
 TEST_CASE("a wave's sort key puts rays close in origin and direction together", "[photons][shoot]") {

@@ -69,7 +69,13 @@ struct PhotonPathState {
     std::uint16_t specular_only;  // no diffuse hit yet: a diffuse hit after bounce 0 is caustic
 };
 
-// Emission of path `path` (bounce stream 0, dimensions 0..4). lights.count > 0, its power > 0.
+// Whether paths can start at all: a light with power, and photons to share it. Where not, a path
+// traces nothing and stores nothing.
+KDPM_HD KDPM_INLINE bool photons_can_start(const LightSelection& lights, const ShootSettings& s) {
+    return lights.count > 0 && lights.total_power > 0.0f && s.emitted_count > 0;
+}
+
+// Emission of path `path` (bounce stream 0, dimensions 0..4); photons_can_start must hold.
 KDPM_HD inline PhotonPathState start_photon_path(const GeometryView& g, const LightSelection& lights,
                                                  const ShootSettings& s, std::uint64_t path) {
     auto rnd = [&](std::uint32_t dim) { return counter_random(s.seed, path, 0, dim); };
@@ -164,7 +170,7 @@ KDPM_HD inline PhotonPathResult trace_photon_path(const GeometryView& g, const L
                                                   const ShootSettings& s, std::uint64_t path, PhotonHit* out,
                                                   const ClosestHit& intersect = ClosestHit{}) {
     PhotonPathResult result;
-    if (lights.count == 0 || !(lights.total_power > 0.0f) || s.emitted_count == 0) return result;
+    if (!photons_can_start(lights, s)) return result;
     PhotonPathState st = start_photon_path(g, lights, s, path);
     for (;;) {
         const Hit hit = intersect(g, next_photon_ray(st));

@@ -90,7 +90,7 @@ struct WaveGatherPass {
 // One ray of each path, in ray order: the stored photon (if any) to wave_hits[j], and fate[j] =
 // bit 0: stored, bit 1: the path goes on (sorted[j] is then its next state). Nothing is written
 // where the path's slots are: stores scattered among the walk's loads cost it more than the
-// separate pass below (Sponza, two threads: 284 against 267 ms).
+// separate pass below (Sponza, two threads, separate lab runs: 284 against 255-267 ms).
 inline constexpr std::uint8_t kWaveStored = 1, kWaveGoesOn = 2;
 template <class ClosestHit>
 struct WaveStepPass {
@@ -140,7 +140,7 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
     using namespace shoot_waves_detail;
     static_assert(Device::arrays_on_host, "waves sort and compact on the host");
     static_assert(std::is_trivial_v<PhotonPathState> && std::is_trivial_v<PhotonHit>, "scratch arrays stay uncleared");
-    if (lights.count == 0 || !(lights.total_power > 0.0f) || settings.emitted_count == 0) {
+    if (!photons_can_start(lights, settings)) {
         for (std::uint64_t i = 0; i < n; ++i) results[i] = PhotonPathResult{};  // as trace_photon_path
         return;
     }

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -71,6 +72,7 @@ struct WaveStartPass {
     void operator()(std::uint64_t i) const { live[i] = start_photon_path(geometry, lights, settings, first + i); }
 };
 
+// The first wave's ranks (later waves' come from the step pass).
 struct WaveKeyPass {
     WaveKey key;
     const PhotonPathState* live = nullptr;
@@ -79,26 +81,31 @@ struct WaveKeyPass {
 };
 
 // The wave's states in ray order, read apart from the walk so that its scattered loads do not
-// interleave with the tree's.
+// interleave with the tree's: from the previous wave's array (slot = its index there).
 struct WaveGatherPass {
-    const PhotonPathState* live = nullptr;
+    const PhotonPathState* previous = nullptr;
     const WaveRank* ranks = nullptr;
     PhotonPathState* sorted = nullptr;
-    void operator()(std::uint64_t j) const { sorted[j] = live[ranks[j].slot]; }
+    void operator()(std::uint64_t j) const { sorted[j] = previous[ranks[j].slot]; }
 };
 
-// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j], and fate[j] =
-// bit 0: stored, bit 1: the path goes on (sorted[j] is then its next state). Nothing is written
-// where the path's slots are: stores scattered among the walk's loads cost it more than the
-// separate pass below (Sponza, two threads, separate lab runs: 284 against 255-267 ms).
+// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j]; fate[j] =
+// bit 0: stored, bit 1: the path goes on, and then sorted[j] is its next state and next[j] its
+// rank in the next wave (else next[j].key = kWaveEnded). Nothing is written where the path's
+// slots are: stores scattered among the walk's loads cost it more than the separate pass below
+// (Sponza, two threads, separate lab runs: 284 against 255-267 ms). Ranking here, while the state
+// is at hand, leaves 8-byte ranks to compact between waves instead of 56-byte states.
 inline constexpr std::uint8_t kWaveStored = 1, kWaveGoesOn = 2;
+inline constexpr std::uint32_t kWaveEnded = ~0u;  // above every WaveKey (30 bits)
 template <class ClosestHit>
 struct WaveStepPass {
     GeometryView geometry;
     ShootSettings settings;
+    WaveKey key;
     PhotonPathState* sorted = nullptr;
     PhotonHit* wave_hits = nullptr;
     std::uint8_t* fate = nullptr;
+    WaveRank* next = nullptr;
     ClosestHit intersect{};
     void operator()(std::uint64_t j) const {
         PhotonPathState& st = sorted[j];
@@ -107,6 +114,7 @@ struct WaveStepPass {
         const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stored);
         st.stored = static_cast<std::uint16_t>(st.stored + (stored ? 1 : 0));
         fate[j] = static_cast<std::uint8_t>((stored ? kWaveStored : 0) | (goes_on ? kWaveGoesOn : 0));
+        next[j] = WaveRank{goes_on ? key(st) : kWaveEnded, static_cast<std::uint32_t>(j)};
     }
 };
 
@@ -144,31 +152,34 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
         for (std::uint64_t i = 0; i < n; ++i) results[i] = PhotonPathResult{};  // as trace_photon_path
         return;
     }
-    // Written before they are read, so not cleared.
-    auto live = dev.template scratch<PhotonPathState>(n);
-    auto sorted = dev.template scratch<PhotonPathState>(n);
+    // Written before they are read, so not cleared. Each wave reads the states of the one before
+    // from one array and steps them in the other.
+    auto states_a = dev.template scratch<PhotonPathState>(n);
+    auto states_b = dev.template scratch<PhotonPathState>(n);
     auto wave_hits = dev.template scratch<PhotonHit>(n);
     auto fate = dev.template scratch<std::uint8_t>(n);
-    std::vector<WaveRank> ranks;
-    dev.launch(n, WaveStartPass{geometry, lights, settings, first, live.data()});
+    auto next = dev.template scratch<WaveRank>(n);
+    PhotonPathState* previous = states_a.data();
+    PhotonPathState* sorted = states_b.data();
+    std::vector<WaveRank> ranks(n);
     const WaveKey key(geometry.info);
+    dev.launch(n, WaveStartPass{geometry, lights, settings, first, previous});
+    dev.launch(n, WaveKeyPass{key, previous, ranks.data()});
     for (std::uint64_t m = n; m > 0;) {
-        ranks.resize(m);
-        dev.launch(m, WaveKeyPass{key, live.data(), ranks.data()});
         // Stable: equal keys keep the previous wave's order, so the order is the same every run.
         stable_radix_sort(ranks, [](const WaveRank& r) { return static_cast<std::uint64_t>(r.key); });
-        dev.launch(m, WaveGatherPass{live.data(), ranks.data(), sorted.data()});
-        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, sorted.data(), wave_hits.data(), fate.data(),
-                                               intersect});
-        dev.launch(m, WaveStorePass{first, settings.max_bounces + std::uint64_t{1}, sorted.data(), wave_hits.data(),
+        dev.launch(m, WaveGatherPass{previous, ranks.data(), sorted});
+        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, key, sorted, wave_hits.data(), fate.data(),
+                                               next.data(), intersect});
+        dev.launch(m, WaveStorePass{first, settings.max_bounces + std::uint64_t{1}, sorted, wave_hits.data(),
                                     fate.data(), slots, results});
         std::uint64_t going_on = 0;
-        const std::uint8_t* fates = fate.data();
-        const PhotonPathState* stepped = sorted.data();
-        PhotonPathState* next = live.data();
+        const WaveRank* stepped = next.data();
         for (std::uint64_t j = 0; j < m; ++j)
-            if (fates[j] & kWaveGoesOn) next[going_on++] = stepped[j];
+            if (stepped[j].key != kWaveEnded) ranks[going_on++] = stepped[j];
+        ranks.resize(going_on);
         m = going_on;
+        std::swap(previous, sorted);
     }
 }
 

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "tools/bench/bench_report.h"
+#include "tools/bench/host_description.h"
 #include "tools/bench/scene_bench.h"
 #include "tools/bench/scenes_root.h"
 #include "tools/cli/args.h"
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
             }
         }
         if (work.empty()) fs::remove_all(dir);
-        std::cout << bench::format_report(results, markdown);
+        std::cout << "\n" << bench::host_description() << "\n" << bench::format_report(results, markdown);
         return 0;
     });
 }

@@ -173,7 +173,10 @@ void compare_photon_tracers(const SceneBenchConfig& c, const GeometryView& g, co
     shoot.max_bounces = c.bounces;
     ShotPhotons ours, theirs;
     std::vector<double> ours_ms, theirs_ms;
-    for (int f = 0; f < c.frames; ++f) {
+    // A shooting pass takes a tenth of a second or two, short enough for a drifting host to move
+    // single pairs by a fifth either way (a lab run's Sponza pairs: 0.81-1.07x around 1.00x): as
+    // many pairs as the ray rows.
+    for (int f = 0; f < std::max(c.frames, kShortPassPairs); ++f) {
         ours_ms.push_back(median_ms(1, [&] { ours = shoot_photons(g, shoot); }));
         theirs_ms.push_back(median_ms(1, [&] { theirs = tracer.shoot(shoot); }));
     }

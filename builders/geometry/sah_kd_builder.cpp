@@ -1,6 +1,7 @@
 #include "builders/geometry/sah_kd_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -105,6 +106,13 @@ struct NodeInput {
         std::vector<std::uint32_t>().swap(tris);
         for (auto& e : ev) std::vector<Event>().swap(e);
         std::vector<AxisBox>().swap(boxes);
+    }
+    // Empty, as a fresh one, but keeping the arrays' memory for the next node.
+    void reuse() {
+        tris.clear();
+        for (auto& e : ev) e.clear();
+        boxes.clear();
+        binned = false;
     }
 };
 
@@ -348,8 +356,9 @@ private:
             // What the general case below would produce, without touching the events.
             NodeInput& full = s.empty_left ? right : left;
             NodeInput& empty = s.empty_left ? left : right;
-            full.tris = std::move(in.tris);
-            for (int a = 0; a < 3; ++a) full.ev[a] = std::move(in.ev[a]);
+            // Swapped rather than moved: `in` is spent, and full's arrays may be reused memory.
+            full.tris.swap(in.tris);
+            for (int a = 0; a < 3; ++a) full.ev[a].swap(in.ev[a]);
             full.cell = empty.cell = in.cell;
             left.cell.hi[s.axis] = s.pos;
             right.cell.lo[s.axis] = s.pos;
@@ -498,19 +507,27 @@ private:
         return piece;
     }
 
+    // A subtree on one thread, depth first. The children's inputs are this thread's arrays for
+    // their depth, reused from node to node: fresh ones for every node made malloc and free about
+    // 5% of the Conference room's build (one thread, perf), and reusing them takes 0.88-0.95x the
+    // time (one thread, three alternations); the trees are byte-identical.
     void build_flat(NodeInput& in, std::uint32_t depth, Flat& out) {
         const Split s = find_split(in, depth);
         if (s.axis < 0) {
             make_leaf(in, out);
             return;
         }
-        NodeInput left, right;
+        // A build_flat call runs to its end on its thread (nothing inside it waits on other
+        // tasks), so a depth's pair is never in use twice at a time.
+        thread_local std::vector<std::array<NodeInput, 2>> by_depth(kMaxKdTreeDepth + 1);
+        NodeInput& left = by_depth[depth + 1][0];
+        NodeInput& right = by_depth[depth + 1][1];
+        left.reuse();
+        right.reuse();
         split_node(in, s, left, right);
-        in.release();
         const std::size_t index = out.nodes.size();
         out.nodes.push_back(KdNode{});
         build_flat(left, depth + 1, out);
-        left.release();
         out.nodes[index] = KdNode::inner(s.axis, s.pos, checked_index(out.nodes.size()));
         build_flat(right, depth + 1, out);
     }

@@ -89,13 +89,12 @@ struct WaveGatherPass {
     void operator()(std::uint64_t j) const { sorted[j] = previous[ranks[j].slot]; }
 };
 
-// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j]; fate[j] =
-// bit 0: stored, bit 1: the path goes on, and then sorted[j] is its next state and next[j] its
-// rank in the next wave (else next[j].key = kWaveEnded). Nothing is written where the path's
+// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j] with
+// stored[j] = 1; if the path goes on, sorted[j] is its next state and next[j] its rank in the
+// next wave, else next[j].key = kWaveEnded. Nothing is written where the path's
 // slots are: stores scattered among the walk's loads cost it more than the separate pass below
 // (Sponza, two threads, separate lab runs: 284 against 255-267 ms). Ranking here, while the state
 // is at hand, leaves 8-byte ranks to compact between waves instead of 56-byte states.
-inline constexpr std::uint8_t kWaveStored = 1, kWaveGoesOn = 2;
 inline constexpr std::uint32_t kWaveEnded = ~0u;  // above every WaveKey (30 bits)
 template <class ClosestHit>
 struct WaveStepPass {
@@ -104,16 +103,16 @@ struct WaveStepPass {
     WaveKey key;
     PhotonPathState* sorted = nullptr;
     PhotonHit* wave_hits = nullptr;
-    std::uint8_t* fate = nullptr;
+    std::uint8_t* stored = nullptr;
     WaveRank* next = nullptr;
     ClosestHit intersect{};
     void operator()(std::uint64_t j) const {
         PhotonPathState& st = sorted[j];
         const Hit hit = intersect(geometry, next_photon_ray(st));
-        bool stored = false;
-        const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stored);
-        st.stored = static_cast<std::uint16_t>(st.stored + (stored ? 1 : 0));
-        fate[j] = static_cast<std::uint8_t>((stored ? kWaveStored : 0) | (goes_on ? kWaveGoesOn : 0));
+        bool stores = false;
+        const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stores);
+        st.stored = static_cast<std::uint16_t>(st.stored + (stores ? 1 : 0));
+        stored[j] = stores ? 1 : 0;
         next[j] = WaveRank{goes_on ? key(st) : kWaveEnded, static_cast<std::uint32_t>(j)};
     }
 };
@@ -125,15 +124,16 @@ struct WaveStorePass {
     std::uint64_t per_path = 0;
     const PhotonPathState* sorted = nullptr;
     const PhotonHit* wave_hits = nullptr;
-    const std::uint8_t* fate = nullptr;
+    const std::uint8_t* stored = nullptr;
+    const WaveRank* next = nullptr;
     PhotonHit* slots = nullptr;
     PhotonPathResult* results = nullptr;
     void operator()(std::uint64_t j) const {
         const PhotonPathState& st = sorted[j];
         const std::uint64_t i = st.path - first;
-        if (fate[j] & kWaveStored) slots[i * per_path + st.stored - 1] = wave_hits[j];
+        if (stored[j]) slots[i * per_path + st.stored - 1] = wave_hits[j];
         // An ended path's bounce is that of its last ray: one ray per bounce 0..bounce.
-        if (!(fate[j] & kWaveGoesOn)) results[i] = PhotonPathResult{st.stored, st.bounce + 1};
+        if (next[j].key == kWaveEnded) results[i] = PhotonPathResult{st.stored, st.bounce + 1};
     }
 };
 
@@ -157,7 +157,7 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
     auto states_a = dev.template scratch<PhotonPathState>(n);
     auto states_b = dev.template scratch<PhotonPathState>(n);
     auto wave_hits = dev.template scratch<PhotonHit>(n);
-    auto fate = dev.template scratch<std::uint8_t>(n);
+    auto stored = dev.template scratch<std::uint8_t>(n);
     auto next = dev.template scratch<WaveRank>(n);
     PhotonPathState* previous = states_a.data();
     PhotonPathState* sorted = states_b.data();
@@ -169,10 +169,10 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
         // Stable: equal keys keep the previous wave's order, so the order is the same every run.
         stable_radix_sort(ranks, [](const WaveRank& r) { return static_cast<std::uint64_t>(r.key); });
         dev.launch(m, WaveGatherPass{previous, ranks.data(), sorted});
-        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, key, sorted, wave_hits.data(), fate.data(),
+        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, key, sorted, wave_hits.data(), stored.data(),
                                                next.data(), intersect});
         dev.launch(m, WaveStorePass{first, settings.max_bounces + std::uint64_t{1}, sorted, wave_hits.data(),
-                                    fate.data(), slots, results});
+                                    stored.data(), next.data(), slots, results});
         std::uint64_t going_on = 0;
         const WaveRank* stepped = next.data();
         for (std::uint64_t j = 0; j < m; ++j)

@@ -20,7 +20,7 @@ std::optional<KdBuildQuality> parse_quality(std::string_view name);
 
 struct KdBuildParams {
     float traversal_cost = 1.0f;     // K_T: cost of stepping through one inner node
-    float intersection_cost = 1.5f;  // K_I: cost of one ray/triangle test
+    float intersection_cost = 1.0f;  // K_I: cost of one ray/triangle test (four are tested at once)
     float empty_bonus = 0.2f;        // split cost is scaled by (1 - bonus) when one side is empty
     int max_depth = 0;               // 0: automatic, 8 + 1.3 log2(N), capped below kMaxKdTreeDepth
     int leaf_size = 0;               // nodes with at most this many triangles become leaves unsplit

@@ -4,7 +4,7 @@ namespace kdpm::cli {
 
 void add_sah_cost_options(Args& args, SahCosts& costs) {
     args.option("traversal-cost", &costs.traversal, "C", "SAH cost of an inner node step (default 1)", 0.0, 1e6)
-        .option("intersection-cost", &costs.intersection, "C", "SAH cost of a ray/triangle test (default 1.5)", 1e-6,
+        .option("intersection-cost", &costs.intersection, "C", "SAH cost of a ray/triangle test (default 1)", 1e-6,
                 1e6)
         .option("empty-bonus", &costs.empty_bonus, "B", "cost reduction for splits with an empty side, 0..1 (default 0.2)",
                 0.0, 1.0);

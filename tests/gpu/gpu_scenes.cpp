@@ -46,7 +46,7 @@ GpuTestScene build_gpu_test_scene(const std::string& name, std::uint64_t photons
         ShotPhotons shot = shoot_photons(s.views.geometry, options);
         PhotonHitSet set{shot.info, std::move(shot.hits)};
         PhotonMapBuild map =
-            build_photon_map_file(set, PhotonTreeOptions{}, Metadata{}, every_nth_photon_irradiance(4, 64));
+            build_photon_map_file(set, PhotonTreeOptions{}, Metadata{}, default_photon_irradiance());
         s.photons.emplace(PhotonMapFile::from_bytes(map.writer.bytes(), name + ".kdp"));
         s.views.photons.global = s.photons->view(PhotonMapKind::global);
         s.views.photons.caustic = s.photons->view(PhotonMapKind::caustic);

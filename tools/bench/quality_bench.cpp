@@ -40,7 +40,7 @@ std::uint32_t build_scene_files(const QualityConfig& c, const std::filesystem::p
     shoot.max_bounces = photon_bounces_of(c, scene);
     ShotPhotons shot = shoot_photons(geometry.view(), shoot);
     PhotonHitSet set{shot.info, std::move(shot.hits)};
-    build_photon_map_file(set, PhotonTreeOptions{}, {}, every_nth_photon_irradiance(4, 64)).writer.write(kdp);
+    build_photon_map_file(set, PhotonTreeOptions{}, {}, default_photon_irradiance()).writer.write(kdp);
     return shoot.max_bounces;
 }
 

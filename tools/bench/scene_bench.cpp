@@ -427,7 +427,7 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
     balanced.builder = PhotonTreeBuilder::balanced;
     out.balanced_tree_ms = median_ms(c.frames, [&] { (void)build_photon_map_file(set, balanced, {}); });
     // As kdpm-build-photons writes it: with the irradiance map that final gathering reads.
-    build_photon_map_file(set, vvh, {}, every_nth_photon_irradiance(4, 64)).writer.write(kdp);
+    build_photon_map_file(set, vvh, {}, default_photon_irradiance()).writer.write(kdp);
     out.kdp_bytes = std::filesystem::file_size(kdp);
 
     say(c, "loading the files");

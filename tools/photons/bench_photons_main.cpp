@@ -96,7 +96,8 @@ double queries_per_second(std::size_t n, const Body& body, bool single_thread) {
 }
 
 struct BenchOptions {
-    int photons = 0, bounces = 4, size = 512, leaf_size = 16, k_min = 2, k_max = 256, repeat = 3;
+    int photons = 0, bounces = 4, size = 512, leaf_size = static_cast<int>(PhotonTreeOptions{}.leaf_size);
+    int k_min = 2, k_max = 256, repeat = 3;
     int threads = 1;  // Embree's build workers
     bool nanoflann = true, embree = true;
     bool single_thread = false;
@@ -218,7 +219,8 @@ int main(int argc, char** argv) {
         .option("photons", &o.photons, "N", "photon paths to shoot (default: the scene's, else 262144)", 0, 1 << 28)
         .option("bounces", &o.bounces, "B", "most bounces (default 4)", 0, 255)
         .option("size", &o.size, "PIXELS", "image width and height for the query points (default 512)", 1, 8192)
-        .option("leaf-size", &o.leaf_size, "N", "photon tree leaf size (default 16)", 1, 4096)
+        .option("leaf-size", &o.leaf_size, "N", "photon tree leaf size (default " + std::to_string(o.leaf_size) + ")", 1,
+                4096)
         .option("k-max", &o.k_max, "K", "largest k (default 256; k = 2, 4, 8, ... up to it)", 2, 256)
         .option("k-min", &o.k_min, "K", "smallest k (default 2)", 1, 256)
         .option("repeat", &o.repeat, "N", "runs per measurement, the fastest counts (default 3)", 1, 100)

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_shards.h"
@@ -24,18 +25,25 @@ using namespace kdpm;
 int main(int argc, char** argv) {
     std::string input, output;
     bool balanced = false, quiet = false;
-    int leaf_size = 16, threads = 0, irradiance_every = 4, irradiance_k = 64;
+    int leaf_size = static_cast<int>(PhotonTreeOptions{}.leaf_size), threads = 0;
+    int irradiance_every = static_cast<int>(kDefaultIrradianceEvery);
+    int irradiance_k = static_cast<int>(kDefaultIrradianceK);
     double radius = 0.0;
+    // The help's defaults are the variables' initial values, so they follow the library's.
+    const std::string default_leaf = std::to_string(leaf_size), default_every = std::to_string(irradiance_every),
+                      default_k = std::to_string(irradiance_k);
     cli::Args args("kdpm-build-photons", "Builds the photon kd-tree file (.kdp) from photon hits (.kdph).");
     args.positional("PHOTONS.kdph", &input, "photon hits from kdpm-shoot-photons")
         .option("output", &output, "FILE.kdp", "output file")
         .flag("balanced", &balanced, "classic balanced median-split tree instead of VVH")
-        .option("leaf-size", &leaf_size, "N", "most photons per leaf (default 16)", 1, 4096)
+        .option("leaf-size", &leaf_size, "N", "most photons per leaf (default " + default_leaf + ")", 1, 4096)
         .option("radius", &radius, "R", "VVH expected query radius (default: estimated for k = 32)", 0.0, 1e30)
         .option("irradiance-every", &irradiance_every, "N",
-                "precompute the irradiance at every N-th photon for final gathering (default 4; 0: none)", 0,
-                1 << 30)
-        .option("irradiance-k", &irradiance_k, "K", "photons per precomputed irradiance estimate (default 64)", 1,
+                "precompute the irradiance at every N-th photon for final gathering (default " + default_every +
+                    "; 0: none)",
+                0, 1 << 30)
+        .option("irradiance-k", &irradiance_k, "K",
+                "photons per precomputed irradiance estimate (default " + default_k + ")", 1,
                 static_cast<int>(kMaxGatherK))
         .option("threads", &threads, "N", "worker threads (default: all cores)", 0, 1024)
         .flag("quiet", &quiet, "print nothing on success");

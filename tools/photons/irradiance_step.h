@@ -9,6 +9,10 @@
 
 namespace kdpm {
 
+// kdpm-build-photons' defaults for --irradiance-every and --irradiance-k.
+inline constexpr std::uint32_t kDefaultIrradianceEvery = 4;
+inline constexpr std::uint32_t kDefaultIrradianceK = 64;
+
 inline IrradiancePrecompute every_nth_photon_irradiance(std::uint32_t every, std::uint32_t k) {
     return [every, k](const BuiltPhotonTree& global) {
         IrradianceSamples samples;
@@ -17,6 +21,12 @@ inline IrradiancePrecompute every_nth_photon_irradiance(std::uint32_t every, std
                                                    irradiance_estimate_params(k, global.info.query_radius));
         return samples;
     };
+}
+
+// The irradiance step kdpm-build-photons runs by default, for the benchmarks that write .kdp files
+// as it does.
+inline IrradiancePrecompute default_photon_irradiance() {
+    return every_nth_photon_irradiance(kDefaultIrradianceEvery, kDefaultIrradianceK);
 }
 
 }  // namespace kdpm

@@ -1,7 +1,7 @@
 #pragma once
 // A scene's photon maps made in-process, as kdpm-shoot-photons and kdpm-build-photons would
 // make them: photons shot through the scene's geometry, the global and caustic trees, and the
-// irradiance map precomputed at every 4th photon.
+// irradiance map precomputed at kdpm-build-photons' default spacing (kDefaultIrradianceEvery).
 #include <cstdint>
 #include <vector>
 
@@ -29,8 +29,8 @@ struct InMemoryPhotons {
         for (const PhotonHit& h : shot.hits)
             if (h.flags & kPhotonCaustic) caustic_hits.push_back(h);
         caustic = build_photon_tree(caustic_hits, PhotonTreeOptions{}, shot.info.emitted_count, bounces);
-        irradiance = build_irradiance_map(global, shot.hits, every_nth_photon_irradiance(4, irradiance_k)(global),
-                                          PhotonTreeOptions{});
+        const IrradiancePrecompute precompute = every_nth_photon_irradiance(kDefaultIrradianceEvery, irradiance_k);
+        irradiance = build_irradiance_map(global, shot.hits, precompute(global), PhotonTreeOptions{});
     }
 
     // The maps as a loaded .kdp gives them; without the irradiance map when asked.

@@ -73,8 +73,20 @@ struct Event {
 inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
 
 // Sorts one axis' events, which arrive in triangle (local) order: a stable sort by position and
-// type then orders them as operator< does. Radix passes pay off from about a thousand events.
+// type then orders them as operator< does. Radix passes pay off from about a thousand events;
+// the few fresh events of a small node sort fastest by insertion (std::sort's set-up costs more).
+// Events are distinct (each names its triangle), so every sort gives the same order.
 void sort_events(std::vector<Event>& ev) {
+    if (ev.size() <= 16) {
+        Event* e = ev.data();
+        for (std::size_t i = 1; i < ev.size(); ++i) {
+            const Event x = e[i];
+            std::size_t j = i;
+            for (; j > 0 && x < e[j - 1]; --j) e[j] = e[j - 1];
+            e[j] = x;
+        }
+        return;
+    }
     if (ev.size() < 1024) {
         std::sort(ev.begin(), ev.end());
         return;
@@ -319,10 +331,14 @@ private:
             std::size_t i = 0;
             while (i < m) {
                 const std::uint32_t pb = e[i].pos_bits();
-                std::uint32_t ends = 0, planar = 0, starts = 0;
-                while (i < m && e[i].pos_bits() == pb && e[i].type() == kEnd) ++ends, ++i;
-                while (i < m && e[i].pos_bits() == pb && e[i].type() == kPlanar) ++planar, ++i;
-                while (i < m && e[i].pos_bits() == pb && e[i].type() == kStart) ++starts, ++i;
+                // The group's events counted by type in one loop: its only branch is where the
+                // position changes (three loops, one per type, mispredicted at each type change).
+                std::uint32_t count[3] = {0, 0, 0};
+                do {
+                    ++count[e[i].type()];
+                    ++i;
+                } while (i < m && e[i].pos_bits() == pb);
+                const std::uint32_t ends = count[kEnd], planar = count[kPlanar], starts = count[kStart];
                 const float p = from_order_bits(pb);
                 nr -= planar + ends;
                 if (p > lo && p < hi) {
@@ -344,6 +360,7 @@ private:
         std::vector<std::uint8_t> side;
         std::vector<std::uint32_t> lmap, rmap;
         std::vector<Event> fresh_l[3], fresh_r[3];
+        std::vector<Event> one_sided_l, one_sided_r;
         std::vector<AxisBox> box;
     };
 
@@ -445,32 +462,37 @@ private:
             std::vector<Event>& fr = scratch.fresh_r[a];
             sort_events(fl);
             sort_events(fr);
-            std::vector<Event>& el = left.ev[a];
-            std::vector<Event>& er = right.ev[a];
-            // Each one-sided triangle has one or two events per axis: reserve for two.
-            el.reserve(2 * n_left);
-            er.reserve(2 * n_right);
-            std::size_t il = 0, ir = 0;
+            // The one-sided triangles' events, in order, split by side without a branch on the
+            // side (which is data-dependent): each event is written to both lists and counted in
+            // the one it belongs to; a slot it is not counted in is overwritten by the next one.
+            const std::vector<Event>& ev = in.ev[a];
+            const std::size_t m = ev.size();
+            std::vector<Event>& one_l = scratch.one_sided_l;
+            std::vector<Event>& one_r = scratch.one_sided_r;
+            if (one_l.size() < m + 1) one_l.resize(m + 1), one_r.resize(m + 1);
+            Event* ol = one_l.data();
+            Event* orr = one_r.data();
+            std::size_t nl = 0, nr = 0;
             const std::uint8_t* side_of = side.data();
             const std::uint32_t* lm = lmap.data();
             const std::uint32_t* rm = rmap.data();
-            const std::size_t nfl = fl.size(), nfr = fr.size();
-            for (const Event& e : in.ev[a]) {
+            for (std::size_t j = 0; j < m; ++j) {
+                const Event e = ev[j];
                 const std::uint32_t i = e.local();
                 const std::uint8_t sd = side_of[i];
-                if (sd == kBoth) continue;
-                if (sd == kLeft) {
-                    const Event moved = e.with_local(lm[i]);
-                    while (il < nfl && fl[il] < moved) el.push_back(fl[il++]);
-                    el.push_back(moved);
-                } else {
-                    const Event moved = e.with_local(rm[i]);
-                    while (ir < nfr && fr[ir] < moved) er.push_back(fr[ir++]);
-                    er.push_back(moved);
-                }
+                ol[nl] = e.with_local(lm[i]);
+                orr[nr] = e.with_local(rm[i]);
+                nl += sd == kLeft;
+                nr += sd == kRight;
             }
-            el.insert(el.end(), fl.begin() + static_cast<std::ptrdiff_t>(il), fl.end());
-            er.insert(er.end(), fr.begin() + static_cast<std::ptrdiff_t>(ir), fr.end());
+            // Merged with the straddlers' fresh events (sorted above); none is equal to a
+            // one-sided event (their triangles differ), so the order is operator<'s.
+            std::vector<Event>& el = left.ev[a];
+            std::vector<Event>& er = right.ev[a];
+            el.resize(nl + fl.size());
+            er.resize(nr + fr.size());
+            std::merge(ol, ol + nl, fl.begin(), fl.end(), el.begin());
+            std::merge(orr, orr + nr, fr.begin(), fr.end(), er.begin());
         }
     }
 

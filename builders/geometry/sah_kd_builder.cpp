@@ -326,6 +326,7 @@ private:
             const float lo = in.cell.lo[k], hi = in.cell.hi[k];
             if (!(hi > lo)) continue;
             const std::vector<Event>& e = in.ev[k];
+            const SplitCostAxis axis_terms = split_cost_axis(in.cell, area, k);
             const std::size_t m = e.size();
             std::uint32_t nl = 0, nr = n;
             std::size_t i = 0;
@@ -342,7 +343,7 @@ private:
                 const float p = from_order_bits(pb);
                 nr -= planar + ends;
                 if (p > lo && p < hi) {
-                    const SplitCost c = sah_split_cost(params_, in.cell, area, k, p, nl, planar, nr);
+                    const SplitCost c = sah_split_cost(params_, axis_terms, p, nl, planar, nr);
                     if (c.cost < best_cost) {
                         best_cost = c.cost;
                         best = Split{k, p, c.planar_left, nl + (c.planar_left ? planar : 0) == 0,

@@ -634,34 +634,43 @@ KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds
     s.nodes = nodes.size();
     if (nodes.empty()) return s;
     const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
+    // Depth first, below child first: node order, which is the order the sums have always been
+    // taken in (so the cost keeps its bits). The below child follows at once with the cell cut in
+    // place; only above children wait on the stack.
     struct Entry {
         std::uint32_t node, depth;
         AxisBox cell;
     };
-    std::vector<Entry> stack{{0, 0, bounds}};
+    std::vector<Entry> stack;
+    std::uint32_t node = 0, depth = 0;
+    AxisBox cell = bounds;
     double inner_area = 0.0, leaf_area_weighted = 0.0;
     std::uint64_t nonempty = 0;
-    while (!stack.empty()) {
-        const Entry e = stack.back();
-        stack.pop_back();
-        const KdNode& n = nodes[e.node];
-        const double area = box_area(e.cell);
-        if (n.is_leaf()) {
-            ++s.leaves;
-            s.leaf_references += n.count();
-            s.max_leaf_triangles = std::max(s.max_leaf_triangles, n.count());
-            if (n.count() == 0) ++s.empty_leaves;
-            else ++nonempty;
-            s.max_depth = std::max(s.max_depth, e.depth);
-            leaf_area_weighted += area * n.count();
+    for (;;) {
+        const KdNode& n = nodes[node];
+        const double area = box_area(cell);
+        if (!n.is_leaf()) {
+            inner_area += area;
+            Entry above{n.above_child(), depth + 1, cell};
+            above.cell.lo[n.axis()] = n.split();
+            stack.push_back(above);
+            cell.hi[n.axis()] = n.split();
+            ++node;
+            ++depth;
             continue;
         }
-        inner_area += area;
-        AxisBox lo = e.cell, hi = e.cell;
-        lo.hi[n.axis()] = n.split();
-        hi.lo[n.axis()] = n.split();
-        stack.push_back({n.above_child(), e.depth + 1, hi});
-        stack.push_back({e.node + 1, e.depth + 1, lo});
+        ++s.leaves;
+        s.leaf_references += n.count();
+        s.max_leaf_triangles = std::max(s.max_leaf_triangles, n.count());
+        if (n.count() == 0) ++s.empty_leaves;
+        else ++nonempty;
+        s.max_depth = std::max(s.max_depth, depth);
+        leaf_area_weighted += area * n.count();
+        if (stack.empty()) break;
+        node = stack.back().node;
+        depth = stack.back().depth;
+        cell = stack.back().cell;
+        stack.pop_back();
     }
     s.mean_leaf_triangles = nonempty ? static_cast<double>(s.leaf_references) / static_cast<double>(nonempty) : 0.0;
     s.sah_cost = (params.traversal_cost * inner_area + params.intersection_cost * leaf_area_weighted) / root_area;

@@ -45,14 +45,32 @@ inline void triangle_vertices(const TriangleRecord& t, double (&v)[3][3]) {
     }
 }
 
+// The float next to f toward -infinity / +infinity (std::nextafter's result for a float that is
+// not NaN and not already that infinity), from its bits: nextafter is a library call, and the
+// builder rounds bounds outward for every clipped triangle.
+inline float float_below(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    u = (u & 0x7fffffffu) == 0 ? 0x80000001u : (u & 0x80000000u) ? u + 1 : u - 1;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+inline float float_above(float f) {
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    u = (u & 0x7fffffffu) == 0 ? 0x00000001u : (u & 0x80000000u) ? u - 1 : u + 1;
+    std::memcpy(&f, &u, sizeof f);
+    return f;
+}
+
 // Float bounds that contain the double interval [lo, hi]: rounded outward.
 inline float round_down(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) > x ? std::nextafter(f, -INFINITY) : f;
+    return static_cast<double>(f) > x ? float_below(f) : f;
 }
 inline float round_up(double x) {
     float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, INFINITY) : f;
+    return static_cast<double>(f) < x ? float_above(f) : f;
 }
 
 // Rounding the bounds of a triangle to float. To nearest by default, so that triangles sharing
@@ -76,22 +94,30 @@ inline double float_spacing(double x) {
     return std::max(static_cast<double>(power) * 0x1p-23, 1.4e-45);
 }
 
-inline BoundRounding bound_rounding(const double (&v)[3][3]) {
+// From the triangle's per-axis bounds lo/hi, where a caller has them already.
+inline BoundRounding bound_rounding(const double (&lo)[3], const double (&hi)[3]) {
     BoundRounding r;
-    for (int a = 0; a < 3; ++a) {
-        const double lo = std::min(v[0][a], std::min(v[1][a], v[2][a]));
-        const double hi = std::max(v[0][a], std::max(v[1][a], v[2][a]));
-        r.outward[a] = hi - lo < 1024.0 * float_spacing(std::max(std::fabs(lo), std::fabs(hi)));
-    }
+    for (int a = 0; a < 3; ++a)
+        r.outward[a] = hi[a] - lo[a] < 1024.0 * float_spacing(std::max(std::fabs(lo[a]), std::fabs(hi[a])));
     return r;
 }
 
-// `slack` bounds the error of x; outward rounding also when it is not far below the spacing.
+inline BoundRounding bound_rounding(const double (&v)[3][3]) {
+    double lo[3], hi[3];
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(v[0][a], std::min(v[1][a], v[2][a]));
+        hi[a] = std::max(v[0][a], std::max(v[1][a], v[2][a]));
+    }
+    return bound_rounding(lo, hi);
+}
+
+// `slack` bounds the error of x; outward rounding also when it is not far below the spacing
+// (never for no slack: the spacing is positive, so that case skips working it out).
 inline float bound_down(double x, double slack, bool outward) {
-    return outward || slack >= 0.25 * float_spacing(x) ? round_down(x - slack) : static_cast<float>(x);
+    return outward || (slack > 0.0 && slack >= 0.25 * float_spacing(x)) ? round_down(x - slack) : static_cast<float>(x);
 }
 inline float bound_up(double x, double slack, bool outward) {
-    return outward || slack >= 0.25 * float_spacing(x) ? round_up(x + slack) : static_cast<float>(x);
+    return outward || (slack > 0.0 && slack >= 0.25 * float_spacing(x)) ? round_up(x + slack) : static_cast<float>(x);
 }
 
 // Float bounds of a usable triangle (rounded as above).
@@ -228,7 +254,7 @@ inline bool clip_triangle_to_box(const double (&v)[3][3], const AxisBox& box, Ax
         if (lo[a] > box.hi[a] || hi[a] < box.lo[a]) return false;
         inside = inside && lo[a] >= box.lo[a] && hi[a] <= box.hi[a];
     }
-    const BoundRounding rounding = bound_rounding(v);
+    const BoundRounding rounding = bound_rounding(lo, hi);
     if (inside) {
         clip_detail::inside_bounds(lo, hi, box, rounding, out);
         return true;
@@ -261,7 +287,7 @@ inline void clip_triangle_to_children(const double (&v)[3][3], const AxisBox& ce
     if (!meets_below && !meets_above) return;
     const bool inside_below = inside && l >= below_cell.lo[axis] && h <= below_cell.hi[axis];
     const bool inside_above = inside && l >= above_cell.lo[axis] && h <= above_cell.hi[axis];
-    const BoundRounding rounding = bound_rounding(v);
+    const BoundRounding rounding = bound_rounding(lo, hi);
     if (meets_below && inside_below) clip_detail::inside_bounds(lo, hi, below_cell, rounding, below);
     if (meets_above && inside_above) clip_detail::inside_bounds(lo, hi, above_cell, rounding, above);
     const bool cut_below = meets_below && !inside_below, cut_above = meets_above && !inside_above;

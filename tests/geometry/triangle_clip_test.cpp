@@ -2,8 +2,12 @@
 // to each child cell gives: the builder's perfect splits must not depend on which is used.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include "formats/triangle_clip.h"
 
@@ -62,4 +66,25 @@ TEST_CASE("clipping to both children of a split equals clipping to each child", 
         cut_both += meets_below && meets_above;
     }
     CHECK(cut_both > 10000);  // the shared cuts ran often
+}
+
+TEST_CASE("the next float up and down are std::nextafter's", "[geometry][builder]") {
+    const float inf = std::numeric_limits<float>::infinity();
+    const float max = std::numeric_limits<float>::max(), tiny = std::numeric_limits<float>::denorm_min();
+    std::vector<float> values = {0.0f, -0.0f, tiny, -tiny, 1.0f, -1.0f, max, -max, 1e-38f, -1e-38f};
+    std::mt19937 rng(11);
+    for (int i = 0; i < 100000; ++i) {
+        std::uint32_t bits = static_cast<std::uint32_t>(rng());
+        float f;
+        std::memcpy(&f, &bits, sizeof f);
+        if (std::isfinite(f)) values.push_back(f);
+    }
+    auto same = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    for (float f : values) {
+        INFO("f = " << f);
+        REQUIRE(same(float_below(f), std::nextafter(f, -inf)));
+        REQUIRE(same(float_above(f), std::nextafter(f, inf)));
+    }
+    CHECK(same(float_below(inf), max));
+    CHECK(same(float_above(-inf), -max));
 }

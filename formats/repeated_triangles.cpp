@@ -26,14 +26,23 @@ std::uint64_t vertex_hash(const TriangleRecord& t) {
 }  // namespace
 
 std::vector<bool> repeated_triangles(std::span<const TriangleRecord> triangles) {
-    std::vector<bool> repeated(triangles.size(), false);
+    const std::size_t n = triangles.size();
+    std::vector<bool> repeated(n, false);
     // Open addressing, at most half full: slot holds index + 1 of the first triangle with a key.
-    const std::size_t capacity = std::bit_ceil(2 * triangles.size() + 2);
+    const std::size_t capacity = std::bit_ceil(2 * n + 2);
     std::vector<std::uint32_t> slots(capacity, 0);
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
+    // The keys first, so that the insertions can ask for their slot's cache line well before
+    // they read it: the table outgrows a core's own cache and its lines are read in random order.
+    constexpr std::uint64_t kUnusable = ~std::uint64_t{0};
+    std::vector<std::uint64_t> home(n);
+    for (std::size_t i = 0; i < n; ++i)
+        home[i] = triangle_is_usable(triangles[i]) ? vertex_hash(triangles[i]) & (capacity - 1) : kUnusable;
+    constexpr std::size_t kAhead = 16;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i + kAhead < n && home[i + kAhead] != kUnusable) __builtin_prefetch(&slots[home[i + kAhead]]);
+        if (home[i] == kUnusable) continue;
         const TriangleRecord& t = triangles[i];
-        if (!triangle_is_usable(t)) continue;
-        for (std::size_t s = vertex_hash(t) & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
+        for (std::size_t s = home[i];; s = (s + 1) & (capacity - 1)) {
             if (slots[s] == 0) {
                 slots[s] = static_cast<std::uint32_t>(i + 1);
                 break;

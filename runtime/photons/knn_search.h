@@ -51,6 +51,13 @@ concept AcceptsSixteen = requires(const Accept& a, std::uint32_t base) {
     { a.accepted16(base) } -> std::convertible_to<std::uint32_t>;
 };
 
+// An Accept that can rule out every photon below a node at once (rejects_node(node) true only
+// when accept would refuse each of them): such subtrees are passed over unvisited.
+template <class Accept>
+concept RejectsNodes = requires(const Accept& a, std::uint32_t node) {
+    { a.rejects_node(node) } -> std::convertible_to<bool>;
+};
+
 namespace knn_detail {
 
 // Squared metric distances of m photons (coordinate arrays x, y, z) from q, into out[0..m).
@@ -187,11 +194,17 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
             for (std::uint32_t j = 0; j < m; ++j) consider(base + j, d2[j]);
         }
 #endif
-        // Next subtree whose cell is still closer than the current radius.
+        // Next subtree whose cell is still closer than the current radius and that may hold an
+        // accepted photon. Asked of popped subtrees only: on the way down, a test per node or per
+        // leaf cost more than it saved (Sponza frame, timed).
         for (;;) {
             if (top == 0) return best.finish();
             --top;
-            if (stack[top].d2 < max_d2) break;
+            if (stack[top].d2 < max_d2) {
+                if constexpr (RejectsNodes<Accept>)
+                    if (acc.rejects_node(stack[top].node)) continue;
+                break;
+            }
         }
         const Entry& e = stack[top];
         node = e.node;

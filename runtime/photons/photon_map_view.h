@@ -26,6 +26,10 @@ struct PhotonMapView {
     // CPU only, may be null: each photon's power as photon_power decodes it, 3 floats a photon
     // (unpack_powers); null: decoded per use.
     const float* unpacked_power = nullptr;
+    // CPU only, may be null: per node, the boxes of its photons' decoded directions and normals
+    // (bound_node_vectors, kVectorBoundFloats a node), for surface filters that rule out whole
+    // leaves; null: every leaf is scanned.
+    const float* vector_bounds = nullptr;
     std::uint64_t emitted_count = 0;                     // photon paths emitted by the shooter
 };
 

@@ -20,6 +20,7 @@
 #include "formats/photon_layout.h"
 #include "runtime/photons/filter_memo.h"
 #include "runtime/photons/knn_search.h"
+#include "runtime/photons/node_vector_bounds.h"
 #include "runtime/photons/radius_hints.h"
 #include "runtime/photons/radius_search.h"
 #include "runtime/shading/constants.h"
@@ -65,14 +66,19 @@ struct SurfacePhotonFilter {
     bool check_flags;  // false when no flag or bounce can reject (skips a load per photon)
     bool quick;        // the margins hold: |normal| ~ 1 and min_normal_cos in [0.05, 1]
     float cos2_above, cos2_below;  // min_normal_cos^2 +- 1e-3: the cosine test's margins, once per query
+    const float* bounds;  // PhotonMapView::vector_bounds, used when node_test
+    bool node_test;       // rejects_node may rule nodes out: bounds set, |normal| ~ 1
 
     KDPM_HD SurfacePhotonFilter(const PhotonMapView& map, glm::vec3 n, float min_cos, std::uint32_t min_bounce_,
                                 std::uint32_t exclude)
         : flags(map.flags), directions(map.directions), unpacked(map.unpacked), stride(map.photon_count), normal(n),
           min_normal_cos(min_cos),
-          min_bounce(min_bounce_), exclude_flags(exclude), check_flags(min_bounce_ > 0 || exclude != 0) {
+          min_bounce(min_bounce_), exclude_flags(exclude), check_flags(min_bounce_ > 0 || exclude != 0),
+          bounds(map.vector_bounds) {
         const float n2 = n.x * n.x + n.y * n.y + n.z * n.z;
-        quick = n2 > 0.999f && n2 < 1.001f && (min_cos <= -1.0f || (min_cos >= 0.05f && min_cos <= 1.0f));
+        const bool unit = n2 > 0.999f && n2 < 1.001f;
+        quick = unit && (min_cos <= -1.0f || (min_cos >= 0.05f && min_cos <= 1.0f));
+        node_test = bounds != nullptr && unit;
         const float c2 = min_cos * min_cos;
         cos2_above = c2 + 1e-3f;
         cos2_below = c2 - 1e-3f;
@@ -151,6 +157,37 @@ struct SurfacePhotonFilter {
         float r[3];
         unfolded(directions[p].direction, r);
         return decide_unfolded(p, r, nullptr);
+    }
+
+    // True when no photon below `node` can pass, from the node's boxes of decoded directions and
+    // normals (vector_bounds): the least direction . normal over the box is not below zero (all
+    // from behind), or the greatest stored normal . normal is below min_normal_cos. The boxes'
+    // sums and the photons' differ by a few float roundings (~1e-6 for unit vectors); a margin of
+    // 1e-4 keeps every node that may hold an accepted photon. NaN sums rule nothing out.
+    KDPM_HD bool rejects_node(std::uint32_t node) const {
+        if (!node_test) return false;
+        constexpr float kMargin = 1e-4f;
+        const float* b = bounds + static_cast<std::uint64_t>(node) * kVectorBoundFloats;
+#if defined(__SSE2__) && !defined(__CUDA_ARCH__)
+        const __m128 nv = _mm_setr_ps(normal.x, normal.y, normal.z, 0.0f);
+        const __m128 least = _mm_min_ps(_mm_mul_ps(_mm_loadu_ps(b), nv), _mm_mul_ps(_mm_loadu_ps(b + 4), nv));
+        const __m128 most = _mm_max_ps(_mm_mul_ps(_mm_loadu_ps(b + 8), nv), _mm_mul_ps(_mm_loadu_ps(b + 12), nv));
+        // Lanes 0..2 summed (lane 3 is 0): along = least's sum, facing = most's sum.
+        const __m128 lo = _mm_unpacklo_ps(least, most), hi = _mm_unpackhi_ps(least, most);  // l0 m0 l1 m1 | l2 m2 0 0
+        const __m128 sums = _mm_add_ps(_mm_add_ps(lo, _mm_movehl_ps(lo, lo)), hi);        // l0+l1+l2, m0+m1+m2
+        const float along = _mm_cvtss_f32(sums);
+        const float facing = _mm_cvtss_f32(_mm_shuffle_ps(sums, sums, _MM_SHUFFLE(1, 1, 1, 1)));
+#else
+        const float n[3] = {normal.x, normal.y, normal.z};
+        float along = 0.0f, facing = 0.0f;
+        for (int a = 0; a < 3; ++a) {
+            const float l = n[a] * b[a], h = n[a] * b[4 + a], sl = n[a] * b[8 + a], sh = n[a] * b[12 + a];
+            along += l < h ? l : h;
+            facing += sl > sh ? sl : sh;
+        }
+#endif
+        if (along >= kMargin) return true;
+        return min_normal_cos > -1.0f && facing < min_normal_cos - kMargin;
     }
 
     // Sixteen decisions at once (knn_search's AcceptsSixteen), from the decoded vectors only.

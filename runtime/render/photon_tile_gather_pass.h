@@ -4,7 +4,8 @@
 // starts from the radii of the queries just made (RadiusHints) instead of the search limit, and,
 // where the photons' vectors are not decoded (memory short), reads back the surface filter's
 // decisions for photons its neighbours on the same face have already judged (FilterMemo; with
-// decoded vectors the filter judges 16 photons at once instead). The same photons as the
+// decoded vectors the filter judges 16 photons at once instead, and the searches skip subtrees
+// whose vector boxes it refuses, PhotonMapView::vector_bounds). The same photons as the
 // per-pixel pass (PhotonGatherPass, the GPU's one pixel per thread), found with less work. The
 // tiles are fixed, so the image does not depend on the thread count.
 #include <cstdint>

@@ -1,5 +1,6 @@
 // The CPU backend: the passes run over the mapped sections in place, in oneTBB grains.
 #include "runtime/backend/cpu_device.h"
+#include "runtime/photons/node_vector_bounds.h"
 #include "runtime/photons/unpacked_directions.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/render/frame_memory.h"
@@ -32,16 +33,19 @@ public:
     }
 
 private:
-    // The photon maps' vectors and powers decoded, for every gather of this renderer (the first
-    // frame that gathers pays for it: a few milliseconds for the shared scenes' half a million
-    // photons). Where 36 bytes a photon would take more than a quarter of the memory left, the
-    // gather decodes per use instead: the same decisions and sums, slower.
+    // The photon maps' vectors and powers decoded, and each tree node's boxes of those vectors,
+    // for every gather of this renderer (the first frame that gathers pays for it: a few
+    // milliseconds for the shared scenes' half a million photons). Where 36 bytes a photon and 64
+    // a node would take more than a quarter of the memory left, the gather decodes per use
+    // instead: the same decisions and sums, slower.
     void unpack_once() {
         if (unpacked_) return;
         unpacked_ = true;
         const std::uint64_t photons =
             std::uint64_t{scene_.photons.global.photon_count} + scene_.photons.caustic.photon_count;
-        if (photons * 9 * sizeof(float) > available_memory_bytes() / 4) return;
+        const std::uint64_t nodes =
+            std::uint64_t{scene_.photons.global.node_count} + scene_.photons.caustic.node_count;
+        if ((photons * 9 + nodes * kVectorBoundFloats) * sizeof(float) > available_memory_bytes() / 4) return;
         global_vectors_ = unpack_directions(scene_.photons.global);
         caustic_vectors_ = unpack_directions(scene_.photons.caustic);
         global_powers_ = unpack_powers(scene_.photons.global);
@@ -51,13 +55,18 @@ private:
         scene_.photons.caustic.unpacked = data_or_null(caustic_vectors_);
         scene_.photons.global.unpacked_power = data_or_null(global_powers_);
         scene_.photons.caustic.unpacked_power = data_or_null(caustic_powers_);
+        global_bounds_ = bound_node_vectors(scene_.photons.global);
+        caustic_bounds_ = bound_node_vectors(scene_.photons.caustic);
+        scene_.photons.global.vector_bounds = data_or_null(global_bounds_);
+        scene_.photons.caustic.vector_bounds = data_or_null(caustic_bounds_);
     }
 
     SceneViews scene_;
     LightPowerTable lights_;
     HostBlockCache kept_;  // the frame's arrays, from one frame to the next
     bool unpacked_ = false;
-    std::vector<float> global_vectors_, caustic_vectors_, global_powers_, caustic_powers_;
+    std::vector<float> global_vectors_, caustic_vectors_, global_powers_, caustic_powers_, global_bounds_,
+        caustic_bounds_;
 };
 
 }  // namespace

@@ -1,0 +1,83 @@
+#include "runtime/photons/node_vector_bounds.h"
+
+#include <cmath>
+#include <limits>
+
+#include "runtime/backend/cpu_parallel_for.h"
+
+namespace kdpm {
+
+namespace {
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+void set_empty(float* box) {
+    for (std::uint32_t c = 0; c < kVectorBoundFloats; ++c) box[c] = 0.0f;
+    for (std::uint32_t a = 0; a < 3; ++a) {
+        box[a] = box[8 + a] = kInf;
+        box[4 + a] = box[12 + a] = -kInf;
+    }
+}
+
+// Widens lo/hi (at box[lo_at], box[lo_at + 4]) by v; a NaN component makes them unbounded.
+void widen(float* box, std::uint32_t lo_at, const float v[3]) {
+    for (std::uint32_t a = 0; a < 3; ++a) {
+        float& lo = box[lo_at + a];
+        float& hi = box[lo_at + 4 + a];
+        if (v[a] != v[a]) {
+            lo = -kInf;
+            hi = kInf;
+            continue;
+        }
+        lo = v[a] < lo ? v[a] : lo;
+        hi = v[a] > hi ? v[a] : hi;
+    }
+}
+
+void widen_by_box(float* box, const float* child) {
+    for (std::uint32_t c : {0u, 8u})
+        for (std::uint32_t a = 0; a < 3; ++a) {
+            box[c + a] = child[c + a] < box[c + a] ? child[c + a] : box[c + a];
+            box[c + 4 + a] = child[c + 4 + a] > box[c + 4 + a] ? child[c + 4 + a] : box[c + 4 + a];
+        }
+}
+
+}  // namespace
+
+std::vector<float> bound_node_vectors(const PhotonMapView& map) {
+    const std::uint64_t nodes = map.node_count, n = map.photon_count;
+    std::vector<float> out(nodes * kVectorBoundFloats);
+    if (nodes == 0) return out;
+    // Leaves from their photons (in parallel), then inner nodes from their children: a child's
+    // index is always above its parent's, so one pass from the last node up sees children first.
+    cpu_parallel_for(nodes, [&](std::uint64_t i) {
+        float* box = out.data() + i * kVectorBoundFloats;
+        set_empty(box);
+        const KdNode node = map.nodes[i];
+        if (!node.is_leaf()) return;
+        const std::uint64_t end = std::uint64_t{node.first()} + node.count();
+        for (std::uint64_t p = node.first(); p < end; ++p) {
+            const float d[3] = {map.unpacked[p], map.unpacked[n + p], map.unpacked[2 * n + p]};
+            const float s[3] = {map.unpacked[3 * n + p], map.unpacked[4 * n + p], map.unpacked[5 * n + p]};
+            widen(box, 0, d);
+            widen(box, 8, s);
+        }
+    }, 1024);
+    for (std::uint64_t i = nodes; i-- > 0;) {
+        const KdNode node = map.nodes[i];
+        if (node.is_leaf()) continue;
+        float* box = out.data() + i * kVectorBoundFloats;
+        const std::uint64_t above = node.above_child();
+        if (i + 1 >= nodes || above <= i || above >= nodes) {  // not a tree a validated file holds
+            const float unbounded[3] = {NAN, NAN, NAN};
+            widen(box, 0, unbounded);
+            widen(box, 8, unbounded);
+            continue;
+        }
+        widen_by_box(box, box + kVectorBoundFloats);  // below child: the next node
+        widen_by_box(box, out.data() + above * kVectorBoundFloats);
+    }
+    return out;
+}
+
+}  // namespace kdpm

@@ -5,6 +5,8 @@
 #include <tbb/parallel_for.h>
 
 #include "runtime/photons/irradiance_lookup.h"
+#include "runtime/photons/node_vector_bounds.h"
+#include "runtime/photons/unpacked_directions.h"
 #include "runtime/shading/constants.h"
 
 namespace kdpm {
@@ -42,20 +44,30 @@ std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& gl
                                                          const std::vector<std::uint32_t>& slots,
                                                          const RadianceEstimateParams& params) {
     std::vector<PrecomputedIrradiance> out(slots.size());
+    if (slots.empty()) return out;
+    // The photons' vectors decoded once and each node's boxes of them, as a CPU renderer keeps
+    // them: a filter judges a leaf's photons 16 at a time and skips subtrees it refuses whole,
+    // deciding as it would from the packed vectors (the same values, bit for bit).
+    PhotonMapView map = global;
+    std::vector<float> vectors, bounds;
+    if (map.unpacked == nullptr && map.node_count > 0) {
+        vectors = unpack_directions(map);
+        map.unpacked = vectors.data();
+        bounds = bound_node_vectors(map);
+        map.vector_bounds = bounds.data();
+    }
     // Fixed groups of consecutive slots (neighbours in leaf order), each in turn so that every
-    // search starts from the radii of the ones before it and reads back the filter decisions of
-    // those on the same face; fixed, so the values do not depend on how the threads split the work.
+    // search starts from the radii of the ones before it; fixed, so the values do not depend on
+    // how the threads split the work.
     constexpr std::size_t kGroup = 64;
     const std::size_t groups = (slots.size() + kGroup - 1) / kGroup;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups, 4), [&](const tbb::blocked_range<std::size_t>& r) {
         KnnHeap heap;
-        static thread_local FilterMemo memo;
         for (std::size_t g = r.begin(); g != r.end(); ++g) {
             RadiusHints hints;
-            memo.forget();
             const std::size_t end = (g + 1) * kGroup < slots.size() ? (g + 1) * kGroup : slots.size();
             for (std::size_t i = g * kGroup; i != end; ++i)
-                out[i] = irradiance_at_photon(global, slots[i], params, heap, &hints, &memo);
+                out[i] = irradiance_at_photon(map, slots[i], params, heap, &hints);
         }
     });
     return out;

@@ -41,10 +41,11 @@ private:
     void unpack_once() {
         if (unpacked_) return;
         unpacked_ = true;
-        const std::uint64_t photons =
-            std::uint64_t{scene_.photons.global.photon_count} + scene_.photons.caustic.photon_count;
-        const std::uint64_t nodes =
-            std::uint64_t{scene_.photons.global.node_count} + scene_.photons.caustic.node_count;
+        const PhotonMapView& chosen_photons = scene_.photons.irradiance.photons;
+        const std::uint64_t photons = std::uint64_t{scene_.photons.global.photon_count} +
+                                      scene_.photons.caustic.photon_count + chosen_photons.photon_count;
+        const std::uint64_t nodes = std::uint64_t{scene_.photons.global.node_count} +
+                                    scene_.photons.caustic.node_count + chosen_photons.node_count;
         if ((photons * 9 + nodes * kVectorBoundFloats) * sizeof(float) > available_memory_bytes() / 4) return;
         global_vectors_ = unpack_directions(scene_.photons.global);
         caustic_vectors_ = unpack_directions(scene_.photons.caustic);
@@ -55,6 +56,12 @@ private:
         scene_.photons.caustic.unpacked = data_or_null(caustic_vectors_);
         scene_.photons.global.unpacked_power = data_or_null(global_powers_);
         scene_.photons.caustic.unpacked_power = data_or_null(caustic_powers_);
+        // The irradiance map's chosen photons too: final gathering's lookups filter them alike.
+        PhotonMapView& chosen = scene_.photons.irradiance.photons;
+        irradiance_vectors_ = unpack_directions(chosen);
+        chosen.unpacked = data_or_null(irradiance_vectors_);
+        irradiance_bounds_ = chosen.unpacked ? bound_node_vectors(chosen) : std::vector<float>{};
+        chosen.vector_bounds = data_or_null(irradiance_bounds_);
         global_bounds_ = bound_node_vectors(scene_.photons.global);
         caustic_bounds_ = bound_node_vectors(scene_.photons.caustic);
         scene_.photons.global.vector_bounds = data_or_null(global_bounds_);
@@ -66,7 +73,7 @@ private:
     HostBlockCache kept_;  // the frame's arrays, from one frame to the next
     bool unpacked_ = false;
     std::vector<float> global_vectors_, caustic_vectors_, global_powers_, caustic_powers_, global_bounds_,
-        caustic_bounds_;
+        caustic_bounds_, irradiance_vectors_, irradiance_bounds_;
 };
 
 }  // namespace

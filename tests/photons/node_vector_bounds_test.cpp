@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/node_vector_bounds.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/photons/unpacked_directions.h"
@@ -212,4 +213,29 @@ TEST_CASE("Radiance estimates that skip ruled-out nodes equal those that scan th
         lit += a.count > 0;
     }
     CHECK(lit > 200);
+}
+
+TEST_CASE("Irradiance lookups that skip ruled-out nodes find the same photon", "[photons][bounds]") {
+    const BoundedViews views(12000, 87);
+    std::vector<PrecomputedIrradiance> values(views.plain.photon_count);
+    for (std::uint32_t p = 0; p < views.plain.photon_count; ++p)
+        values[p] = PrecomputedIrradiance{{static_cast<float>(p), 0.0f, 1.0f}};
+    const IrradianceMapView plain{views.plain, values.data()}, bounded{views.bounded, values.data()};
+    std::mt19937 rng(89);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    static KnnHeap heap;
+    std::uint32_t found = 0;
+    for (int q = 0; q < 800; ++q) {
+        const glm::vec3 pos(u(rng), u(rng), u(rng));
+        const glm::vec3 normal = q % 2 ? random_unit(rng) : glm::vec3(0, 0, q % 4 == 0 ? 1 : -1);
+        const float limit = q % 3 == 0 ? 0.0f : 0.2f;
+        glm::vec3 a(-1.0f), b(-2.0f);
+        const bool in_a = lookup_irradiance(plain, pos, normal, limit, 0.7f, heap, a);
+        const bool in_b = lookup_irradiance(bounded, pos, normal, limit, 0.7f, heap, b);
+        INFO("query " << q);
+        REQUIRE(in_a == in_b);
+        if (in_a) REQUIRE(a == b);
+        found += in_a;
+    }
+    CHECK(found > 200);
 }

@@ -12,31 +12,14 @@
 #include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/node_vector_bounds.h"
 #include "runtime/photons/radiance_estimate.h"
-#include "runtime/photons/unpacked_directions.h"
-#include "tests/photons/synthetic_photons.h"
-#include "tests/support/built_tree_view.h"
+#include "tests/photons/decoded_photon_views.h"
 
 using namespace kdpm;
+using test::DecodedPhotonViews;
 
 namespace {
 
-// A synthetic photon tree viewed with decoded vectors, without and with the node boxes.
-struct BoundedViews {
-    BuiltPhotonTree tree;
-    PhotonMapView plain, bounded;
-    std::vector<float> vectors, bounds;
-    BoundedViews(std::uint32_t photons, std::uint32_t seed)
-        : tree(build_photon_tree(test::synthetic_photons(photons, seed).hits, PhotonTreeOptions{})),
-          plain(view_of(tree)) {
-        vectors = unpack_directions(plain);
-        plain.unpacked = vectors.data();
-        bounded = plain;
-        bounds = bound_node_vectors(plain);
-        bounded.vector_bounds = bounds.data();
-    }
-};
-
-// The photons below `node`, as [first, end) ranges of its leaves.
+// The indices of the photons below `node`.
 void photons_below(const PhotonMapView& map, std::uint32_t node, std::vector<std::uint32_t>& out) {
     std::vector<std::uint32_t> todo{node};
     while (!todo.empty()) {
@@ -52,6 +35,12 @@ void photons_below(const PhotonMapView& map, std::uint32_t node, std::vector<std
     }
 }
 
+glm::vec3 random_point(std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const float x = u(rng), y = u(rng);
+    return glm::vec3(x, y, u(rng));
+}
+
 glm::vec3 random_unit(std::mt19937& rng) {
     std::normal_distribution<float> g;
     for (;;) {
@@ -64,7 +53,7 @@ glm::vec3 random_unit(std::mt19937& rng) {
 }  // namespace
 
 TEST_CASE("A node's vector boxes hold the decoded vectors of every photon below it", "[photons][bounds]") {
-    const BoundedViews views(6000, 71);
+    const DecodedPhotonViews views(6000, 71);
     const PhotonMapView& map = views.bounded;
     REQUIRE(views.bounds.size() == std::size_t{map.node_count} * kVectorBoundFloats);
     const std::uint64_t n = map.photon_count;
@@ -100,8 +89,8 @@ TEST_CASE("A node's vector boxes hold the decoded vectors of every photon below 
 }
 
 TEST_CASE("A NaN vector leaves its nodes' boxes unbounded, ruled out by no filter", "[photons][bounds]") {
-    BoundedViews views(3000, 73);
-    PhotonMapView map = views.plain;
+    const DecodedPhotonViews views(3000, 73);
+    PhotonMapView map = views.unpacked;
     std::vector<float> vectors = views.vectors;
     // Photon 0 lies in the first leaf on the root's below path; its direction's x becomes NaN.
     vectors[0] = NAN;
@@ -131,7 +120,7 @@ TEST_CASE("A NaN vector leaves its nodes' boxes unbounded, ruled out by no filte
 }
 
 TEST_CASE("A node is ruled out only when the filter refuses every photon below it", "[photons][bounds]") {
-    const BoundedViews views(8000, 75);
+    const DecodedPhotonViews views(8000, 75);
     const PhotonMapView& map = views.bounded;
     std::mt19937 rng(77);
     std::vector<std::vector<std::uint32_t>> below(map.node_count);
@@ -164,7 +153,7 @@ TEST_CASE("A node is ruled out only when the filter refuses every photon below i
 }
 
 TEST_CASE("A photon exactly at the filter's cosine keeps its leaf", "[photons][bounds]") {
-    const BoundedViews views(4000, 79);
+    const DecodedPhotonViews views(4000, 79);
     const PhotonMapView& map = views.bounded;
     const std::uint64_t n = map.photon_count;
     std::mt19937 rng(81);
@@ -189,13 +178,12 @@ TEST_CASE("A photon exactly at the filter's cosine keeps its leaf", "[photons][b
 }
 
 TEST_CASE("Radiance estimates that skip ruled-out nodes equal those that scan them", "[photons][bounds]") {
-    const BoundedViews views(20000, 83);
+    const DecodedPhotonViews views(20000, 83);
     std::mt19937 rng(85);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     static KnnHeap heap;
     std::uint32_t lit = 0;
     for (int q = 0; q < 600; ++q) {
-        const glm::vec3 pos(u(rng), u(rng), u(rng));
+        const glm::vec3 pos = random_point(rng);
         const glm::vec3 normal = q % 3 == 0 ? random_unit(rng) : glm::vec3(0, q % 3 == 1 ? 1 : -1, 0);
         RadianceEstimateParams params;
         params.k = q % 4 == 0 ? 8 : (q % 4 == 1 ? 64 : 32);
@@ -204,29 +192,26 @@ TEST_CASE("Radiance estimates that skip ruled-out nodes equal those that scan th
         params.min_bounce = q % 7 == 2 ? 1 : 0;
         params.max_radius = q % 8 == 3 ? 0.1f : 0.0f;
         const float hint = q % 2 ? 0.05f : 0.0f;
-        const RadianceEstimate a = estimate_radiance(views.plain, pos, normal, glm::vec3(0.5f), params, heap, hint);
+        const RadianceEstimate a = estimate_radiance(views.unpacked, pos, normal, glm::vec3(0.5f), params, heap, hint);
         const RadianceEstimate b = estimate_radiance(views.bounded, pos, normal, glm::vec3(0.5f), params, heap, hint);
         INFO("query " << q);
-        REQUIRE(a.count == b.count);
-        REQUIRE(std::memcmp(&a.radius, &b.radius, sizeof a.radius) == 0);
-        REQUIRE(std::memcmp(&a.radiance, &b.radiance, sizeof a.radiance) == 0);
+        test::require_same_estimate(a, b);
         lit += a.count > 0;
     }
     CHECK(lit > 200);
 }
 
 TEST_CASE("Irradiance lookups that skip ruled-out nodes find the same photon", "[photons][bounds]") {
-    const BoundedViews views(12000, 87);
-    std::vector<PrecomputedIrradiance> values(views.plain.photon_count);
-    for (std::uint32_t p = 0; p < views.plain.photon_count; ++p)
+    const DecodedPhotonViews views(12000, 87);
+    std::vector<PrecomputedIrradiance> values(views.unpacked.photon_count);
+    for (std::uint32_t p = 0; p < views.unpacked.photon_count; ++p)
         values[p] = PrecomputedIrradiance{{static_cast<float>(p), 0.0f, 1.0f}};
-    const IrradianceMapView plain{views.plain, values.data()}, bounded{views.bounded, values.data()};
+    const IrradianceMapView plain{views.unpacked, values.data()}, bounded{views.bounded, values.data()};
     std::mt19937 rng(89);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     static KnnHeap heap;
     std::uint32_t found = 0;
     for (int q = 0; q < 800; ++q) {
-        const glm::vec3 pos(u(rng), u(rng), u(rng));
+        const glm::vec3 pos = random_point(rng);
         const glm::vec3 normal = q % 2 ? random_unit(rng) : glm::vec3(0, 0, q % 4 == 0 ? 1 : -1);
         const float limit = q % 3 == 0 ? 0.0f : 0.2f;
         glm::vec3 a(-1.0f), b(-2.0f);

@@ -10,27 +10,13 @@
 #include "runtime/photons/filter_memo.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/photons/unpacked_directions.h"
+#include "tests/photons/decoded_photon_views.h"
 #include "tests/photons/synthetic_photons.h"
 #include "tests/support/built_tree_view.h"
 
 using namespace kdpm;
 
-namespace {
-
-// A synthetic photon tree, viewed with packed vectors only and with its decoded vectors.
-struct BothViews {
-    BuiltPhotonTree tree;
-    PhotonMapView packed, unpacked;
-    std::vector<float> vectors, powers;
-    BothViews(std::uint32_t photons, std::uint32_t seed)
-        : tree(build_photon_tree(test::synthetic_photons(photons, seed).hits, PhotonTreeOptions{})),
-          packed(view_of(tree)), unpacked(packed), vectors(unpack_directions(packed)), powers(unpack_powers(packed)) {
-        unpacked.unpacked = vectors.data();
-        unpacked.unpacked_power = powers.data();
-    }
-};
-
-}  // namespace
+using test::DecodedPhotonViews;
 
 TEST_CASE("Decoded photon vectors are decode_octahedral's", "[photons][unpacked]") {
     auto tree = build_photon_tree(test::synthetic_photons(3000, 51).hits, PhotonTreeOptions{});
@@ -67,7 +53,7 @@ TEST_CASE("Decoded photon powers are photon_power's", "[photons][unpacked]") {
 }
 
 TEST_CASE("The surface filter decides alike from decoded and from packed vectors", "[photons][unpacked]") {
-    const BothViews views(9000, 53);
+    const DecodedPhotonViews views(9000, 53);
     const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
     // Unit normals (the quick path), a non-unit one (the exact path), and cosines for a direction
     // test only (-1), the quick margins (0.05..1) and below them (0.01).
@@ -94,7 +80,7 @@ TEST_CASE("The surface filter decides alike from decoded and from packed vectors
 }
 
 TEST_CASE("Sixteen decisions at once are the sixteen single ones", "[photons][unpacked]") {
-    const BothViews views(5000, 61);
+    const DecodedPhotonViews views(5000, 61);
     const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
     const glm::vec3 normals[] = {{0, 1, 0}, {0.6f, 0.8f, 0.0f}, {0, 0, -1}, {0.3f, 0.3f, 0.3f}};
     std::uint64_t accepted = 0, asked = 0;
@@ -119,7 +105,7 @@ TEST_CASE("Sixteen decisions at once are the sixteen single ones", "[photons][un
 }
 
 TEST_CASE("Radiance estimates from decoded vectors equal those from packed ones", "[photons][unpacked]") {
-    const BothViews views(20000, 57);
+    const DecodedPhotonViews views(20000, 57);
     const PhotonMapView &packed = views.packed, &unpacked = views.unpacked;
     std::mt19937 rng(59);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -143,9 +129,7 @@ TEST_CASE("Radiance estimates from decoded vectors equal those from packed ones"
         const RadianceEstimate b = estimate_radiance(unpacked, pos, normal, glm::vec3(0.5f), params, heap, 0.0f,
                                                      memo ? &memo_b : nullptr);
         INFO("query " << q);
-        REQUIRE(a.count == b.count);
-        REQUIRE(std::memcmp(&a.radius, &b.radius, sizeof a.radius) == 0);
-        REQUIRE(std::memcmp(&a.radiance, &b.radiance, sizeof a.radiance) == 0);
+        test::require_same_estimate(a, b);
         lit += a.count > 0;
     }
     CHECK(lit > 200);

@@ -42,9 +42,11 @@ inline PhotonMapView upload_photon_map(std::vector<DeviceBuffer>& owned, const P
     d.power = upload_array(owned, h.power, h.photon_count);
     d.directions = upload_array(owned, h.directions, h.photon_count);
     d.flags = upload_array(owned, h.flags, h.photon_count);
-    // The CPU's decoded copies are host memory: the device decodes per use.
+    // The CPU's decoded copies and node boxes are host memory: the device decodes per use and
+    // scans every leaf it reaches.
     d.unpacked = nullptr;
     d.unpacked_power = nullptr;
+    d.vector_bounds = nullptr;
     return d;
 }
 

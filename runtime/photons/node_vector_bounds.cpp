@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "formats/photon_layout.h"
 #include "runtime/backend/cpu_parallel_for.h"
 
 namespace kdpm {
@@ -17,6 +18,14 @@ void set_empty(float* box) {
         box[a] = box[8 + a] = kInf;
         box[4 + a] = box[12 + a] = -kInf;
     }
+    box[kMaxBounceAt] = -1.0f;
+    box[kCommonFlagsAt] = static_cast<float>(kPhotonKnownFlags);
+}
+
+// The flag summary widened by a photon's flags f, or by a child's summary.
+void widen_flags(float* box, float max_bounce, std::uint32_t common) {
+    box[kMaxBounceAt] = max_bounce > box[kMaxBounceAt] ? max_bounce : box[kMaxBounceAt];
+    box[kCommonFlagsAt] = static_cast<float>(static_cast<std::uint32_t>(box[kCommonFlagsAt]) & common);
 }
 
 // Widens lo/hi (at box[lo_at], box[lo_at + 4]) by v; a NaN component makes them unbounded.
@@ -35,6 +44,7 @@ void widen(float* box, std::uint32_t lo_at, const float v[3]) {
 }
 
 void widen_by_box(float* box, const float* child) {
+    widen_flags(box, child[kMaxBounceAt], static_cast<std::uint32_t>(child[kCommonFlagsAt]));
     for (std::uint32_t c : {0u, 8u})
         for (std::uint32_t a = 0; a < 3; ++a) {
             box[c + a] = child[c + a] < box[c + a] ? child[c + a] : box[c + a];
@@ -61,6 +71,8 @@ std::vector<float> bound_node_vectors(const PhotonMapView& map) {
             const float s[3] = {map.unpacked[3 * n + p], map.unpacked[4 * n + p], map.unpacked[5 * n + p]};
             widen(box, 0, d);
             widen(box, 8, s);
+            const std::uint32_t f = map.flags[p];
+            widen_flags(box, static_cast<float>(photon_bounce(f)), f & kPhotonKnownFlags);
         }
     }, 1024);
     for (std::uint64_t i = nodes; i-- > 0;) {
@@ -72,6 +84,7 @@ std::vector<float> bound_node_vectors(const PhotonMapView& map) {
             const float unbounded[3] = {NAN, NAN, NAN};
             widen(box, 0, unbounded);
             widen(box, 8, unbounded);
+            widen_flags(box, 255.0f, 0u);
             continue;
         }
         widen_by_box(box, box + kVectorBoundFloats);  // below child: the next node

@@ -160,19 +160,25 @@ struct SurfacePhotonFilter {
     }
 
     // True when no photon below `node` can pass, from the node's boxes of decoded directions and
-    // normals (vector_bounds): the least direction . normal over the box is not below zero (all
-    // from behind), or the greatest stored normal . normal is below min_normal_cos. The boxes'
+    // normals and its flag summary (vector_bounds): every photon fails the flag rules, or the
+    // least direction . normal over the box is not below zero (all from behind), or the greatest
+    // stored normal . normal is below min_normal_cos. The boxes'
     // sums and the photons' differ by a few float roundings (~1e-6 for unit vectors); a margin of
     // 1e-4 keeps every node that may hold an accepted photon. NaN sums rule nothing out.
     KDPM_HD bool rejects_node(std::uint32_t node) const {
         if (!node_test) return false;
         constexpr float kMargin = 1e-4f;
         const float* b = bounds + static_cast<std::uint64_t>(node) * kVectorBoundFloats;
+        // Every photon below is of a lower bounce, or carries a flag this filter excludes.
+        if (check_flags && (b[kMaxBounceAt] < static_cast<float>(min_bounce) ||
+                            (static_cast<std::uint32_t>(b[kCommonFlagsAt]) & exclude_flags) != 0))
+            return true;
 #if defined(__SSE2__) && !defined(__CUDA_ARCH__)
         const __m128 nv = _mm_setr_ps(normal.x, normal.y, normal.z, 0.0f);
         const __m128 least = _mm_min_ps(_mm_mul_ps(_mm_loadu_ps(b), nv), _mm_mul_ps(_mm_loadu_ps(b + 4), nv));
         const __m128 most = _mm_max_ps(_mm_mul_ps(_mm_loadu_ps(b + 8), nv), _mm_mul_ps(_mm_loadu_ps(b + 12), nv));
-        // Lanes 0..2 summed (lane 3 is 0): along = least's sum, facing = most's sum.
+        // Lanes 0..2 summed (lane 3, the flag summary times 0, is not read): along = least's sum,
+        // facing = most's sum.
         const __m128 lo = _mm_unpacklo_ps(least, most), hi = _mm_unpackhi_ps(least, most);  // l0 m0 l1 m1 | l2 m2 0 0
         const __m128 sums = _mm_add_ps(_mm_add_ps(lo, _mm_movehl_ps(lo, lo)), hi);        // l0+l1+l2, m0+m1+m2
         const float along = _mm_cvtss_f32(sums);

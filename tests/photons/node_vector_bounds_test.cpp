@@ -4,6 +4,7 @@
 // for bit.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -60,8 +61,6 @@ TEST_CASE("A node's vector boxes hold the decoded vectors of every photon below 
     std::uint32_t empty_leaves = 0;
     for (std::uint32_t node = 0; node < map.node_count; ++node) {
         const float* box = map.vector_bounds + std::uint64_t{node} * kVectorBoundFloats;
-        CHECK(box[3] == 0.0f);
-        CHECK(box[7] == 0.0f);
         CHECK(box[11] == 0.0f);
         CHECK(box[15] == 0.0f);
         std::vector<std::uint32_t> below;
@@ -69,8 +68,16 @@ TEST_CASE("A node's vector boxes hold the decoded vectors of every photon below 
         if (below.empty()) {
             ++empty_leaves;
             CHECK(box[0] > box[4]);  // an empty box
+            CHECK(box[kMaxBounceAt] == -1.0f);
             continue;
         }
+        std::uint32_t max_bounce = 0, common = kPhotonKnownFlags;
+        for (std::uint32_t p : below) {
+            max_bounce = std::max(max_bounce, photon_bounce(map.flags[p]));
+            common &= map.flags[p];
+        }
+        REQUIRE(box[kMaxBounceAt] == static_cast<float>(max_bounce));
+        REQUIRE(box[kCommonFlagsAt] == static_cast<float>(common));
         for (std::uint32_t c = 0; c < 6; ++c) {
             const std::uint32_t lo = c < 3 ? c : 8 + (c - 3);
             float least = INFINITY, most = -INFINITY;
@@ -125,20 +132,25 @@ TEST_CASE("A node is ruled out only when the filter refuses every photon below i
     std::mt19937 rng(77);
     std::vector<std::vector<std::uint32_t>> below(map.node_count);
     for (std::uint32_t node = 0; node < map.node_count; ++node) photons_below(map, node, below[node]);
-    std::uint64_t rejected = 0, asked = 0, leaves_rejected = 0;
-    for (int trial = 0; trial < 60; ++trial) {
+    std::uint64_t rejected = 0, asked = 0, leaves_rejected = 0, by_flags = 0;
+    for (int trial = 0; trial < 72; ++trial) {
         // Axis normals (the synthetic walls') and random ones; cosines from none to the strictest.
         const glm::vec3 normal = trial < 6 ? glm::vec3(trial % 3 == 0, trial % 3 == 1, trial % 3 == 2) *
                                                  (trial < 3 ? 1.0f : -1.0f)
                                            : random_unit(rng);
         const float cosines[] = {-1.0f, 0.0f, 0.7f, 0.95f};
         const float min_cos = cosines[trial % 4];
-        const SurfacePhotonFilter filter(map, normal, min_cos, 0, 0);
+        // Bounce and flag rules as the modes set them: none, direct hits skipped, caustics too.
+        const std::uint32_t min_bounce = (trial / 4) % 3;
+        const std::uint32_t exclude = (trial / 12) % 2 ? kPhotonCaustic : 0u;
+        const SurfacePhotonFilter filter(map, normal, min_cos, min_bounce, exclude),
+            vectors_only(map, normal, min_cos, 0, 0);
         REQUIRE(filter.node_test);
         for (std::uint32_t node = 0; node < map.node_count; ++node) {
             ++asked;
             if (!filter.rejects_node(node)) continue;
             ++rejected;
+            by_flags += !vectors_only.rejects_node(node);
             leaves_rejected += map.nodes[node].is_leaf();
             for (std::uint32_t p : below[node]) {
                 INFO("trial " << trial << " node " << node << " photon " << p);
@@ -150,6 +162,7 @@ TEST_CASE("A node is ruled out only when the filter refuses every photon below i
     CHECK(rejected > asked / 10);
     CHECK(leaves_rejected > 0);
     CHECK(leaves_rejected < rejected);
+    CHECK(by_flags > 0);
 }
 
 TEST_CASE("A photon exactly at the filter's cosine keeps its leaf", "[photons][bounds]") {
@@ -190,6 +203,7 @@ TEST_CASE("Radiance estimates that skip ruled-out nodes equal those that scan th
         params.min_normal_cos = q % 5 == 0 ? -1.0f : 0.7f;
         params.cone_filter = q % 6 == 1;
         params.min_bounce = q % 7 == 2 ? 1 : 0;
+        params.exclude_flags = q % 9 == 4 ? kPhotonCaustic : 0u;
         params.max_radius = q % 8 == 3 ? 0.1f : 0.0f;
         const float hint = q % 2 ? 0.05f : 0.0f;
         const RadianceEstimate a = estimate_radiance(views.unpacked, pos, normal, glm::vec3(0.5f), params, heap, hint);

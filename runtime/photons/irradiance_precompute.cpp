@@ -6,7 +6,6 @@
 
 #include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/node_vector_bounds.h"
-#include "runtime/photons/unpacked_directions.h"
 #include "runtime/shading/constants.h"
 
 namespace kdpm {
@@ -26,16 +25,15 @@ std::vector<std::uint32_t> every_nth_photon(std::uint32_t photon_count, std::uin
 }
 
 PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uint32_t slot,
-                                           const RadianceEstimateParams& params, KnnHeap& heap, RadiusHints* hints,
-                                           FilterMemo* memo) {
+                                           const RadianceEstimateParams& params, KnnHeap& heap, RadiusHints* hints) {
     const glm::vec3 position(global.x[slot], global.y[slot], global.z[slot]);
     float n[3];
     decode_octahedral(global.directions[slot].normal, n);
     // With albedo pi the estimate's f_r is 1: the radiance estimate is the irradiance.
     const glm::vec3 normal(n[0], n[1], n[2]);
     const glm::vec3 e =
-        (hints ? estimate_radiance_near(global, position, normal, glm::vec3(kPi), params, heap, *hints, memo)
-               : estimate_radiance(global, position, normal, glm::vec3(kPi), params, heap, 0.0f, memo))
+        (hints ? estimate_radiance_near(global, position, normal, glm::vec3(kPi), params, heap, *hints)
+               : estimate_radiance(global, position, normal, glm::vec3(kPi), params, heap))
             .radiance;
     return PrecomputedIrradiance{{e.x, e.y, e.z}};
 }
@@ -49,13 +47,7 @@ std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& gl
     // them: a filter judges a leaf's photons 16 at a time and skips subtrees it refuses whole,
     // deciding as it would from the packed vectors (the same values, bit for bit).
     PhotonMapView map = global;
-    std::vector<float> vectors, bounds;
-    if (map.unpacked == nullptr && map.node_count > 0) {
-        vectors = unpack_directions(map);
-        map.unpacked = vectors.data();
-        bounds = bound_node_vectors(map);
-        map.vector_bounds = bounds.data();
-    }
+    const SearchVectors kept = map.unpacked == nullptr ? attach_search_vectors(map) : SearchVectors{};
     // Fixed groups of consecutive slots (neighbours in leaf order), each in turn so that every
     // search starts from the radii of the ones before it; fixed, so the values do not depend on
     // how the threads split the work.

@@ -28,11 +28,11 @@ std::vector<PrecomputedIrradiance> precompute_irradiance(const PhotonMapView& gl
                                                          const std::vector<std::uint32_t>& slots,
                                                          const RadianceEstimateParams& params);
 
-// One photon's value, as precompute_irradiance computes it (tests compare against it). hints:
-// the radii of the searches just made nearby (the search starts from them), memo: their filter
-// decisions (FilterMemo); either may be null, and neither changes which photons are found.
+// One photon's value, as precompute_irradiance computes it. hints: the radii of the searches just
+// made nearby (the search starts from them); may be null, and does not change which photons are
+// found.
 PrecomputedIrradiance irradiance_at_photon(const PhotonMapView& global, std::uint32_t slot,
                                            const RadianceEstimateParams& params, KnnHeap& heap,
-                                           RadiusHints* hints = nullptr, FilterMemo* memo = nullptr);
+                                           RadiusHints* hints = nullptr);
 
 }  // namespace kdpm

@@ -5,6 +5,7 @@
 
 #include "formats/photon_layout.h"
 #include "runtime/backend/cpu_parallel_for.h"
+#include "runtime/photons/unpacked_directions.h"
 
 namespace kdpm {
 
@@ -91,6 +92,16 @@ std::vector<float> bound_node_vectors(const PhotonMapView& map) {
         widen_by_box(box, out.data() + above * kVectorBoundFloats);
     }
     return out;
+}
+
+SearchVectors attach_search_vectors(PhotonMapView& map) {
+    SearchVectors kept;
+    kept.vectors = unpack_directions(map);
+    if (kept.vectors.empty()) return kept;
+    map.unpacked = kept.vectors.data();
+    kept.bounds = bound_node_vectors(map);
+    map.vector_bounds = kept.bounds.data();
+    return kept;  // moved: the arrays, and so the view's pointers into them, stay where they are
 }
 
 }  // namespace kdpm

@@ -2,10 +2,9 @@
 // Per photon-tree node, the box of its photons' decoded directions and of their surface normals,
 // and what their flags share (PhotonMapView::vector_bounds). A surface filter that no vector in a
 // box can pass, or whose bounce and flag rules every photon fails, rules out every photon below
-// that node at once: at corners and thin walls about half the leaves a
-// Sponza k-nearest search reaches hold no photon its filter accepts (a fifth to a half on the
-// shared scenes), and a subtree ruled out is not walked. Computed from PhotonMapView::unpacked,
-// once per renderer.
+// that node at once: at corners and thin walls about half the leaves a Sponza k-nearest search
+// reaches hold no photon its filter accepts (a fifth to a half on the shared scenes), and a
+// subtree ruled out is not walked. Computed from PhotonMapView::unpacked, once per renderer.
 #include <cstdint>
 #include <vector>
 
@@ -24,5 +23,14 @@ inline constexpr std::uint32_t kMaxBounceAt = 3, kCommonFlagsAt = 7;
 // An empty leaf's box is empty (min > max); a NaN vector makes its nodes' boxes unbounded, so no
 // test can rule them out.
 std::vector<float> bound_node_vectors(const PhotonMapView& map);
+
+// A map's decoded vectors (unpack_directions) and its node boxes, kept for its searches.
+struct SearchVectors {
+    std::vector<float> vectors, bounds;
+};
+
+// Decodes `map`'s vectors and bounds its nodes, and points map.unpacked and map.vector_bounds at
+// the result, which must outlive the view's use (both stay null for a map without photons).
+SearchVectors attach_search_vectors(PhotonMapView& map);
 
 }  // namespace kdpm

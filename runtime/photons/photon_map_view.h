@@ -27,8 +27,8 @@ struct PhotonMapView {
     // (unpack_powers); null: decoded per use.
     const float* unpacked_power = nullptr;
     // CPU only, may be null: per node, the boxes of its photons' decoded directions and normals
-    // (bound_node_vectors, kVectorBoundFloats a node), for surface filters that rule out whole
-    // leaves; null: every leaf is scanned.
+    // and what their flags share (bound_node_vectors, kVectorBoundFloats a node), for surface
+    // filters that rule out whole subtrees; null: every subtree within the radius is walked.
     const float* vector_bounds = nullptr;
     std::uint64_t emitted_count = 0;                     // photon paths emitted by the shooter
 };

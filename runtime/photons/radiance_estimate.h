@@ -162,9 +162,9 @@ struct SurfacePhotonFilter {
     // True when no photon below `node` can pass, from the node's boxes of decoded directions and
     // normals and its flag summary (vector_bounds): every photon fails the flag rules, or the
     // least direction . normal over the box is not below zero (all from behind), or the greatest
-    // stored normal . normal is below min_normal_cos. The boxes'
-    // sums and the photons' differ by a few float roundings (~1e-6 for unit vectors); a margin of
-    // 1e-4 keeps every node that may hold an accepted photon. NaN sums rule nothing out.
+    // stored normal . normal is below min_normal_cos. The boxes' sums and the photons' differ by
+    // a few float roundings (~1e-6 for unit vectors); a margin of 1e-4 keeps every node that may
+    // hold an accepted photon. NaN sums rule nothing out.
     KDPM_HD bool rejects_node(std::uint32_t node) const {
         if (!node_test) return false;
         constexpr float kMargin = 1e-4f;

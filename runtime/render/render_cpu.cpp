@@ -47,33 +47,23 @@ private:
         const std::uint64_t nodes = std::uint64_t{scene_.photons.global.node_count} +
                                     scene_.photons.caustic.node_count + chosen_photons.node_count;
         if ((photons * 9 + nodes * kVectorBoundFloats) * sizeof(float) > available_memory_bytes() / 4) return;
-        global_vectors_ = unpack_directions(scene_.photons.global);
-        caustic_vectors_ = unpack_directions(scene_.photons.caustic);
+        global_vectors_ = attach_search_vectors(scene_.photons.global);
+        caustic_vectors_ = attach_search_vectors(scene_.photons.caustic);
+        // The irradiance map's chosen photons too: final gathering's lookups filter them alike.
+        chosen_vectors_ = attach_search_vectors(scene_.photons.irradiance.photons);
         global_powers_ = unpack_powers(scene_.photons.global);
         caustic_powers_ = unpack_powers(scene_.photons.caustic);
         auto data_or_null = [](const std::vector<float>& v) { return v.empty() ? nullptr : v.data(); };
-        scene_.photons.global.unpacked = data_or_null(global_vectors_);
-        scene_.photons.caustic.unpacked = data_or_null(caustic_vectors_);
         scene_.photons.global.unpacked_power = data_or_null(global_powers_);
         scene_.photons.caustic.unpacked_power = data_or_null(caustic_powers_);
-        // The irradiance map's chosen photons too: final gathering's lookups filter them alike.
-        PhotonMapView& chosen = scene_.photons.irradiance.photons;
-        irradiance_vectors_ = unpack_directions(chosen);
-        chosen.unpacked = data_or_null(irradiance_vectors_);
-        irradiance_bounds_ = chosen.unpacked ? bound_node_vectors(chosen) : std::vector<float>{};
-        chosen.vector_bounds = data_or_null(irradiance_bounds_);
-        global_bounds_ = bound_node_vectors(scene_.photons.global);
-        caustic_bounds_ = bound_node_vectors(scene_.photons.caustic);
-        scene_.photons.global.vector_bounds = data_or_null(global_bounds_);
-        scene_.photons.caustic.vector_bounds = data_or_null(caustic_bounds_);
     }
 
     SceneViews scene_;
     LightPowerTable lights_;
     HostBlockCache kept_;  // the frame's arrays, from one frame to the next
     bool unpacked_ = false;
-    std::vector<float> global_vectors_, caustic_vectors_, global_powers_, caustic_powers_, global_bounds_,
-        caustic_bounds_, irradiance_vectors_, irradiance_bounds_;
+    SearchVectors global_vectors_, caustic_vectors_, chosen_vectors_;
+    std::vector<float> global_powers_, caustic_powers_;
 };
 
 }  // namespace

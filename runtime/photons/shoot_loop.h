@@ -1,8 +1,9 @@
 #pragma once
-// Photon shooting written once for both backends: batches of paths, each path traced into its
-// own fixed max_bounces + 1 slots, then the slots copied to the host and compacted in path order.
-// A batch's paths are traced depth first, one work item per path (ShootPathsPass, the kernel),
-// or on the CPU in sorted waves (shoot_waves.h), which gives the same hits faster. The hits are
+// Photon shooting written once for both backends: batches of paths, the photons of each batch
+// appended to the shot in path order. A batch's paths are traced depth first, one work item per
+// path (ShootPathsPass, the kernel), each into its own fixed max_bounces + 1 slots that the host
+// then compacts; or on the CPU in sorted waves (shoot_waves.h), which gives the same hits faster
+// and places each photon straight where it belongs. The hits are
 // therefore the same whatever the thread count, the order or the backend runs the paths -- up to
 // floating point: see photon_shooter.h for where the CUDA build can differ.
 // `Device` is CpuDevice or CudaDevice (scratch<T>(n), launch(n, pass), to_host, begin).
@@ -14,6 +15,7 @@
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
 #include "runtime/backend/items_on_host.h"
+#include "runtime/photons/append_path_hits.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/photons/photon_path.h"
 #include "runtime/photons/shoot_waves.h"
@@ -64,40 +66,44 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
     std::vector<PhotonHit> batch_hits;
     std::vector<PhotonPathResult> batch_results;
     const std::size_t start_size = hits.size();
+    // Room for a batch's photons and, at the rate stored so far, for the batches to come (at least
+    // a quarter more than now), so that the hits are not copied again at every doubling.
+    std::uint64_t done = 0;
+    const auto reserve = [&](std::uint64_t batch_stored) {
+        const std::uint64_t needed = hits.size() + batch_stored;
+        if (hits.capacity() >= needed) return;
+        const double rate = static_cast<double>(needed - start_size) / static_cast<double>(done);
+        const auto expected = start_size + static_cast<std::uint64_t>(rate * static_cast<double>(end_path - first_path));
+        hits.reserve(std::max({needed, expected, hits.capacity() + hits.capacity() / 4}));
+    };
     for (std::uint64_t first = first_path; first < end_path; first += batch) {
         const std::uint64_t n = std::min(batch, end_path - first);
+        done = first + n - first_path;
         dev.begin();
-        // Every path writes its result; slots past a path's `stored` are never read.
-        auto slots = dev.template scratch<PhotonHit>(n * per_path);
+        // Every path writes its result.
         auto results = dev.template scratch<PhotonPathResult>(n);
-        bool in_waves = false;
+        const PhotonPathResult* result_items = nullptr;
         if constexpr (requires { requires Device::arrays_on_host; }) {
-            if (order == PathOrder::sorted_waves) {
-                shoot_batch_in_waves(dev, geometry, lights, settings, first, n, slots.data(), results.data(), intersect);
-                in_waves = true;
+            if (order == PathOrder::sorted_waves && n <= shoot_waves_detail::kWaveMaxBatch &&
+                settings.max_bounces <= 255) {
+                shoot_batch_in_waves(dev, geometry, lights, settings, first, n, results.data(), hits, reserve,
+                                     intersect);
+                result_items = results.data();
             }
         }
-        if (!in_waves)
+        if (result_items == nullptr) {
+            // Slots past a path's `stored` are never read.
+            auto slots = dev.template scratch<PhotonHit>(n * per_path);
             dev.launch(n, ShootPathsPass<ClosestHit>{geometry, lights, settings, first, slots.data(), results.data(),
                                                      intersect});
-        const PhotonHit* slot_items = items_on_host(dev, slots, batch_hits);
-        const PhotonPathResult* result_items = items_on_host(dev, results, batch_results);
-        // Room for this batch and, at the rate stored so far, for the batches to come (at least a
-        // quarter more than now), so that the hits are not copied again at every doubling.
-        std::uint64_t batch_stored = 0;
-        for (std::uint64_t i = 0; i < n; ++i) batch_stored += result_items[i].stored;
-        const std::uint64_t needed = hits.size() + batch_stored;
-        if (hits.capacity() < needed) {
-            const double rate = static_cast<double>(needed - start_size) / static_cast<double>(first + n - first_path);
-            const auto expected = start_size + static_cast<std::uint64_t>(rate * static_cast<double>(end_path - first_path));
-            hits.reserve(std::max({needed, expected, hits.capacity() + hits.capacity() / 4}));
+            const PhotonHit* slot_items = items_on_host(dev, slots, batch_hits);
+            result_items = items_on_host(dev, results, batch_results);
+            std::uint64_t batch_stored = 0;
+            for (std::uint64_t i = 0; i < n; ++i) batch_stored += result_items[i].stored;
+            reserve(batch_stored);
+            append_path_hits(slot_items, per_path, result_items, n, batch_stored, hits);
         }
-        for (std::uint64_t i = 0; i < n; ++i) {
-            rays += result_items[i].rays;
-            // Most paths store a hit or two: one at a time beats a bulk copy call per path.
-            const PhotonHit* path_hits = slot_items + i * per_path;
-            for (std::uint32_t k = 0; k < result_items[i].stored; ++k) hits.push_back(path_hits[k]);
-        }
+        for (std::uint64_t i = 0; i < n; ++i) rays += result_items[i].rays;
         if (progress) progress(static_cast<double>(first + n - first_path) / static_cast<double>(end_path - first_path));
     }
     return rays;

@@ -89,62 +89,76 @@ struct WaveGatherPass {
     void operator()(std::uint64_t j) const { sorted[j] = previous[ranks[j].slot]; }
 };
 
-// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j] with
-// stored[j] = 1; if the path goes on, sorted[j] is its next state and next[j] its rank in the
-// next wave, else next[j].key = kWaveEnded. Nothing is written where the path's
-// slots are: stores scattered among the walk's loads cost it more than the separate pass below
-// (Sponza, two threads, separate lab runs: 284 against 255-267 ms). Ranking here, while the state
-// is at hand, leaves 8-byte ranks to compact between waves instead of 56-byte states.
+// Where a wave's ray stored its photon: the path's place in the batch and the photon's index
+// among the path's stored ones, packed as place * 256 + index (a path stores at most 256), or
+// kWaveNotStored.
+inline constexpr std::uint32_t kWaveNotStored = ~0u;
+inline constexpr std::uint64_t kWaveMaxBatch = (std::uint64_t{1} << 24) - 1;  // places pack below kWaveNotStored
+
+// One ray of each path, in ray order: the stored photon (if any) to wave_hits[j] and its place in
+// the shot to where[j]; if the path goes on, sorted[j] is its next state and next[j] its rank in
+// the next wave, else next[j].key = kWaveEnded and the path's result is written. The photons stay
+// in wave order until the batch ends (place_wave_photons), where each is copied once, straight to
+// its place in the shot: scattering them to per-path slots here, or in a pass after the walk, and
+// compacting the slots later cost a fifth more than the walk alone (Sponza, two threads).
+// Ranking here, while the state is at hand, leaves 8-byte ranks to compact between waves instead
+// of 56-byte states.
 inline constexpr std::uint32_t kWaveEnded = ~0u;  // above every WaveKey (30 bits)
 template <class ClosestHit>
 struct WaveStepPass {
     GeometryView geometry;
     ShootSettings settings;
     WaveKey key;
+    std::uint64_t first = 0;
     PhotonPathState* sorted = nullptr;
     PhotonHit* wave_hits = nullptr;
-    std::uint8_t* stored = nullptr;
+    std::uint32_t* where = nullptr;
     WaveRank* next = nullptr;
+    PhotonPathResult* results = nullptr;
     ClosestHit intersect{};
     void operator()(std::uint64_t j) const {
         PhotonPathState& st = sorted[j];
         const Hit hit = intersect(geometry, next_photon_ray(st));
         bool stores = false;
         const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stores);
+        const auto place = static_cast<std::uint32_t>(st.path - first);
+        where[j] = stores ? place << 8 | st.stored : kWaveNotStored;
         st.stored = static_cast<std::uint16_t>(st.stored + (stores ? 1 : 0));
-        stored[j] = stores ? 1 : 0;
-        next[j] = WaveRank{goes_on ? key(st) : kWaveEnded, static_cast<std::uint32_t>(j)};
+        if (goes_on) {
+            next[j] = WaveRank{key(st), static_cast<std::uint32_t>(j)};
+        } else {
+            next[j] = WaveRank{kWaveEnded, static_cast<std::uint32_t>(j)};
+            // An ended path's bounce is that of its last ray: one ray per bounce 0..bounce.
+            results[place] = PhotonPathResult{st.stored, st.bounce + 1};
+        }
     }
 };
 
-// The wave's photons to their paths' next slots (a path has one ray per wave, so its photons
-// arrive in the order trace_photon_path stores them), and the result of each path that ended.
-struct WaveStorePass {
-    std::uint64_t first = 0;
-    std::uint64_t per_path = 0;
-    const PhotonPathState* sorted = nullptr;
+// Every photon of the batch's waves to its place in `out`: the path's first (path_start, by
+// place) plus its index, so the shot holds them in path order, each path's in the order
+// trace_photon_path stores them (a path has one ray per wave).
+struct WavePlacePass {
     const PhotonHit* wave_hits = nullptr;
-    const std::uint8_t* stored = nullptr;
-    const WaveRank* next = nullptr;
-    PhotonHit* slots = nullptr;
-    PhotonPathResult* results = nullptr;
-    void operator()(std::uint64_t j) const {
-        const PhotonPathState& st = sorted[j];
-        const std::uint64_t i = st.path - first;
-        if (stored[j]) slots[i * per_path + st.stored - 1] = wave_hits[j];
-        // An ended path's bounce is that of its last ray: one ray per bounce 0..bounce.
-        if (next[j].key == kWaveEnded) results[i] = PhotonPathResult{st.stored, st.bounce + 1};
+    const std::uint32_t* where = nullptr;
+    const std::uint64_t* path_start = nullptr;
+    PhotonHit* out = nullptr;
+    void operator()(std::uint64_t e) const {
+        const std::uint32_t w = where[e];
+        if (w != kWaveNotStored) out[path_start[w >> 8] + (w & 0xffu)] = wave_hits[e];
     }
 };
 
 }  // namespace shoot_waves_detail
 
-// Paths first .. first + n - 1 into slots (max_bounces + 1 per path) and results, as n work
-// items of ShootPathsPass would write them. `dev` runs the passes (a CpuDevice).
-template <class Device, class ClosestHit>
+// Paths first .. first + n - 1 (n <= kWaveMaxBatch, max_bounces <= 255), as n work items of ShootPathsPass would trace them: each path's
+// result to results[i] and the batch's photons appended to `hits` in path order, after
+// reserve(photons of the batch) has had its say on hits' capacity. `dev` runs the passes (a
+// CpuDevice).
+template <class Device, class ClosestHit, class Reserve>
 void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const LightSelection& lights,
-                          const ShootSettings& settings, std::uint64_t first, std::uint64_t n, PhotonHit* slots,
-                          PhotonPathResult* results, const ClosestHit& intersect) {
+                          const ShootSettings& settings, std::uint64_t first, std::uint64_t n,
+                          PhotonPathResult* results, std::vector<PhotonHit>& hits, const Reserve& reserve,
+                          const ClosestHit& intersect) {
     using namespace shoot_waves_detail;
     static_assert(Device::arrays_on_host, "waves sort and compact on the host");
     static_assert(std::is_trivial_v<PhotonPathState> && std::is_trivial_v<PhotonHit>, "scratch arrays stay uncleared");
@@ -152,12 +166,15 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
         for (std::uint64_t i = 0; i < n; ++i) results[i] = PhotonPathResult{};  // as trace_photon_path
         return;
     }
+    const std::uint64_t per_path = settings.max_bounces + std::uint64_t{1};
     // Written before they are read, so not cleared. Each wave reads the states of the one before
-    // from one array and steps them in the other.
+    // from one array and steps them in the other; its photons and their places follow those of
+    // the waves before (a path has at most per_path rays). Pages past the batch's rays are never
+    // touched.
     auto states_a = dev.template scratch<PhotonPathState>(n);
     auto states_b = dev.template scratch<PhotonPathState>(n);
-    auto wave_hits = dev.template scratch<PhotonHit>(n);
-    auto stored = dev.template scratch<std::uint8_t>(n);
+    auto wave_hits = dev.template scratch<PhotonHit>(n * per_path);
+    auto where = dev.template scratch<std::uint32_t>(n * per_path);
     auto next = dev.template scratch<WaveRank>(n);
     PhotonPathState* previous = states_a.data();
     PhotonPathState* sorted = states_b.data();
@@ -165,14 +182,14 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
     const WaveKey key(geometry.info);
     dev.launch(n, WaveStartPass{geometry, lights, settings, first, previous});
     dev.launch(n, WaveKeyPass{key, previous, ranks.data()});
+    std::uint64_t rays = 0;  // of the waves so far: where this wave's photons go
     for (std::uint64_t m = n; m > 0;) {
         // Stable: equal keys keep the previous wave's order, so the order is the same every run.
         stable_radix_sort(ranks, [](const WaveRank& r) { return static_cast<std::uint64_t>(r.key); });
         dev.launch(m, WaveGatherPass{previous, ranks.data(), sorted});
-        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, key, sorted, wave_hits.data(), stored.data(),
-                                               next.data(), intersect});
-        dev.launch(m, WaveStorePass{first, settings.max_bounces + std::uint64_t{1}, sorted, wave_hits.data(),
-                                    stored.data(), next.data(), slots, results});
+        dev.launch(m, WaveStepPass<ClosestHit>{geometry, settings, key, first, sorted, wave_hits.data() + rays,
+                                               where.data() + rays, next.data(), results, intersect});
+        rays += m;
         std::uint64_t going_on = 0;
         const WaveRank* stepped = next.data();
         for (std::uint64_t j = 0; j < m; ++j)
@@ -181,6 +198,16 @@ void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const Light
         m = going_on;
         std::swap(previous, sorted);
     }
+    // Each path's first place in `hits`, then every photon copied once to its place.
+    std::vector<std::uint64_t> path_start(n);
+    std::uint64_t end = hits.size();
+    for (std::uint64_t i = 0; i < n; ++i) {
+        path_start[i] = end;
+        end += results[i].stored;
+    }
+    reserve(end - hits.size());
+    hits.resize(end);
+    dev.launch(rays, WavePlacePass{wave_hits.data(), where.data(), path_start.data(), hits.data()});
 }
 
 }  // namespace kdpm

@@ -50,3 +50,39 @@ TEST_CASE("the shooting loop gives the same hits whatever the batch size", "[pho
     CHECK(shoot_batch_size(6, 1u << 20, 64u << 20) == (64u << 20) / (7 * sizeof(PhotonHit)));  // else the budget
     CHECK(shoot_batch_size(255, 1u << 20, 1u << 10) == 1024);  // never below 1024 paths
 }
+
+TEST_CASE("both path orders append exactly each path's own photons, in path order, after those already there",
+          "[photons][shoot]") {
+    auto box = test::closed_box_with_glass_cube(0.8f);
+    const GeometryView g = box.view();
+    const LightPowerTable lights = light_power_table(g);
+    ShootSettings settings;
+    settings.emitted_count = 3000;
+    settings.max_bounces = 8;
+    settings.seed = 4;
+    settings.ray_offset = photon_ray_offset(g.info);
+    // The reference: one path after another, each traced on its own into its own slots.
+    const PhotonHit marker = [] {
+        PhotonHit h{};
+        h.path = 0xdeadbeefu;
+        return h;
+    }();
+    std::vector<PhotonHit> reference{marker, marker};
+    std::uint64_t reference_rays = 0;
+    std::vector<PhotonHit> out(settings.max_bounces + 1);
+    for (std::uint64_t path = 500; path < 2700; ++path) {
+        const PhotonPathResult r = trace_photon_path(g, lights.selection(), settings, path, out.data());
+        reference_rays += r.rays;
+        reference.insert(reference.end(), out.begin(), out.begin() + r.stored);
+    }
+    REQUIRE(reference.size() > 2200);
+    for (const PathOrder order : {PathOrder::depth_first, PathOrder::sorted_waves}) {
+        CpuDevice device;
+        std::vector<PhotonHit> hits{marker, marker};
+        const std::uint64_t rays = shoot_paths(device, g, lights.selection(), settings, 500, 2700, 1024, hits, {},
+                                               KdTreeClosestHit{}, order);
+        CHECK(rays == reference_rays);
+        REQUIRE(hits.size() == reference.size());
+        CHECK(std::memcmp(hits.data(), reference.data(), hits.size() * sizeof(PhotonHit)) == 0);
+    }
+}

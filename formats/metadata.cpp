@@ -5,6 +5,8 @@
 #include <cereal/types/string.hpp>
 #include <rapidjson/document.h>
 #include <rapidjson/error/en.h>
+#include <rapidjson/prettywriter.h>
+#include <rapidjson/stringbuffer.h>
 
 #include <cmath>
 #include <cstdio>
@@ -23,14 +25,6 @@ namespace {
 // String-keyed maps as JSON objects ({"max_depth": "40"}), so metadata reads naturally in
 // kdpm-inspect --json; cereal's default would be a list of key/value pairs.
 template <class T>
-void save_object(cereal::JSONOutputArchive& ar, const char* name, const std::map<std::string, T>& map) {
-    ar.setNextName(name);
-    ar.startNode();
-    for (const auto& [k, v] : map) ar(cereal::make_nvp(k, v));
-    ar.finishNode();
-}
-
-template <class T>
 void load_object(cereal::JSONInputArchive& ar, const char* name, std::map<std::string, T>& map) {
     ar.setNextName(name);
     ar.startNode();
@@ -46,14 +40,6 @@ void load_object(cereal::JSONInputArchive& ar, const char* name, std::map<std::s
 }  // namespace
 
 template <class Archive>
-void save(Archive& ar, const Metadata& m) {
-    ar(cereal::make_nvp("tool", m.tool), cereal::make_nvp("tool_version", m.tool_version),
-       cereal::make_nvp("source_path", m.source_path), cereal::make_nvp("source_hash", m.source_hash));
-    save_object(ar, "parameters", m.parameters);
-    save_object(ar, "statistics", m.statistics);
-}
-
-template <class Archive>
 void load(Archive& ar, Metadata& m) {
     ar(cereal::make_nvp("tool", m.tool), cereal::make_nvp("tool_version", m.tool_version),
        cereal::make_nvp("source_path", m.source_path), cereal::make_nvp("source_hash", m.source_hash));
@@ -62,16 +48,36 @@ void load(Archive& ar, Metadata& m) {
 }
 
 std::string metadata_to_json(const Metadata& m) {
-    // JSON has no NaN or infinity (the writer would leave a bare key): such a statistic carries
-    // no information and is left out, so the text stays valid JSON.
-    Metadata finite = m;
-    std::erase_if(finite.statistics, [](const auto& kv) { return !std::isfinite(kv.second); });
-    std::ostringstream out;
-    {
-        cereal::JSONOutputArchive ar(out, cereal::JSONOutputArchive::Options::Default());
-        ar(cereal::make_nvp("kdpm", finite));
+    // RapidJSON's pretty writer straight into a string buffer, as cereal's JSON archive would set
+    // it up (4-space indent, its default precision), so the text is the same byte for byte: the
+    // archive feeds an std::ostream a character at a time, and was a fifth of building the Cornell
+    // box's whole .kdg (callgrind).
+    rapidjson::StringBuffer buffer;
+    rapidjson::PrettyWriter<rapidjson::StringBuffer> w(buffer);
+    w.SetIndent(' ', 4);
+    const auto text = [&](const std::string& s) { w.String(s.data(), static_cast<rapidjson::SizeType>(s.size())); };
+    w.StartObject();
+    w.Key("kdpm");
+    w.StartObject();
+    for (const auto& [key, value] : {std::pair{"tool", &m.tool}, std::pair{"tool_version", &m.tool_version},
+                                     std::pair{"source_path", &m.source_path}, std::pair{"source_hash", &m.source_hash}}) {
+        w.Key(key);
+        text(*value);
     }
-    return out.str();
+    w.Key("parameters");
+    w.StartObject();
+    for (const auto& [key, value] : m.parameters) text(key), text(value);
+    w.EndObject();
+    w.Key("statistics");
+    w.StartObject();
+    // JSON has no NaN or infinity (the writer would refuse them): such a statistic carries no
+    // information and is left out, so the text stays valid JSON.
+    for (const auto& [key, value] : m.statistics)
+        if (std::isfinite(value)) text(key), w.Double(value);
+    w.EndObject();
+    w.EndObject();
+    w.EndObject();
+    return std::string(buffer.GetString(), buffer.GetSize());
 }
 
 namespace {

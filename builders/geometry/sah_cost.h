@@ -43,6 +43,8 @@ inline SplitCost sah_split_cost(const KdBuildParams& p, const SplitCostAxis& a, 
         const float c = p.traversal_cost + p.intersection_cost * (pl * static_cast<float>(l) + pr * static_cast<float>(r));
         return (l == 0 || r == 0) ? c * (1.0f - p.empty_bonus) : c;
     };
+    // Without planar triangles both placements are the same split: one cost, planar_left as a tie.
+    if (np == 0) return SplitCost{cost(nl, nr), true};
     const float c_left = cost(nl + np, nr), c_right = cost(nl, nr + np);
     return c_left <= c_right ? SplitCost{c_left, true} : SplitCost{c_right, false};
 }

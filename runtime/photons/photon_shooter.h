@@ -1,7 +1,8 @@
 #pragma once
 // The driver of the shooting kernel on either backend: runs trace_photon_path for every path in
-// batches (each path writes only its own max_bounces + 1 slots; shoot_loop.h), then compacts the
-// slots in path order, so the hits are identical whatever the thread count.
+// batches (shoot_loop.h: each path writes only its own max_bounces + 1 slots, or on the CPU its
+// photons are tagged with their path and place), then puts the photons in path order, so the
+// hits are identical whatever the thread count.
 //
 // CPU and CUDA: the CUDA kernels are compiled with --fmad=false (no fused multiply-add
 // contraction, which the host compiler does not do either), and +, -, *, / and sqrt are

@@ -28,9 +28,10 @@ ShootPlan plan_shooting(const GeometryView& g, const ShootOptions& options);
 // Fills shot.info (emitted count and power, bounce limit, stored and caustic counts, bounds).
 void summarize_shot(const GeometryView& g, const ShootOptions& options, ShotPhotons& shot);
 
-// CPU batches: 64 Ki paths, or fewer when their slots would pass 256 MiB. Larger batches would
-// sort more rays together, but their fresh slot pages cost more than that gains (two threads,
-// 256 Ki paths: Sponza 211 against 187 ms in waves, the Cornell box 141 against 122 ms).
+// CPU batches: 64 Ki paths, or fewer when their room for max_bounces + 1 photons a path would pass
+// 256 MiB. Larger batches would sort more rays together, but their fresh pages cost more than that
+// gains (two threads, 256 Ki paths: Sponza 211 against 187 ms in waves with per-path slots; with
+// photons placed straight into the shot, no faster, and the depth-first order slower).
 inline std::uint64_t cpu_shoot_batch_size(std::uint32_t max_bounces) {
     return shoot_batch_size(max_bounces, 1u << 16, 256u << 20);
 }

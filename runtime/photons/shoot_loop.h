@@ -15,8 +15,8 @@
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
 #include "runtime/backend/items_on_host.h"
-#include "runtime/photons/append_path_hits.h"
 #include "runtime/geometry/geometry_view.h"
+#include "runtime/photons/append_path_hits.h"
 #include "runtime/photons/photon_path.h"
 #include "runtime/photons/shoot_waves.h"
 #include "runtime/shading/area_light.h"
@@ -66,22 +66,23 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
     std::vector<PhotonHit> batch_hits;
     std::vector<PhotonPathResult> batch_results;
     const std::size_t start_size = hits.size();
-    // Room for a batch's photons and, at the rate stored so far, for the batches to come (at least
-    // a quarter more than now), so that the hits are not copied again at every doubling. The
-    // estimate has 1/32 to spare: batches' rates differ by tenths of a percent, and a last batch
-    // that overran it copied all the hits once more (Conference room, Cornell box: 20 of 145 ms
-    // of a two-thread shot went to sizing the hits, against 10 on Sponza).
-    std::uint64_t done = 0;
-    const auto reserve = [&](std::uint64_t batch_stored) {
-        const std::uint64_t needed = hits.size() + batch_stored;
-        if (hits.capacity() >= needed) return;
-        const double rate = static_cast<double>(needed - start_size) / static_cast<double>(done) * (1.0 + 1.0 / 32);
-        const auto expected = start_size + static_cast<std::uint64_t>(rate * static_cast<double>(end_path - first_path));
-        hits.reserve(std::max({needed, expected, hits.capacity() + hits.capacity() / 4}));
-    };
     for (std::uint64_t first = first_path; first < end_path; first += batch) {
         const std::uint64_t n = std::min(batch, end_path - first);
-        done = first + n - first_path;
+        const std::uint64_t done = first + n - first_path;  // paths once this batch is traced
+        // Room for this batch's photons and, at the rate stored so far, for the batches to come (at
+        // least a quarter more than now), so that the hits are not copied again at every doubling.
+        // The estimate has 1/32 to spare: batches' rates differ by tenths of a percent, and a last
+        // batch that overran it copied all the hits once more (Conference room, Cornell box: 20 of
+        // 145 ms of a two-thread shot went to sizing the hits, against 10 on Sponza).
+        const auto reserve = [&](std::uint64_t batch_stored) {
+            const std::uint64_t needed = hits.size() + batch_stored;
+            if (hits.capacity() >= needed) return;
+            const double rate =
+                static_cast<double>(needed - start_size) / static_cast<double>(done) * (1.0 + 1.0 / 32);
+            const auto expected =
+                start_size + static_cast<std::uint64_t>(rate * static_cast<double>(end_path - first_path));
+            hits.reserve(std::max({needed, expected, hits.capacity() + hits.capacity() / 4}));
+        };
         dev.begin();
         // Every path writes its result.
         auto results = dev.template scratch<PhotonPathResult>(n);

@@ -7,9 +7,9 @@
 // at a time (kd_packet_walk.inc).
 //
 // The result is the single-ray walk's, bit for bit: every lane keeps the segment the single-ray
-// walk would have at that node, enters exactly the leaves that walk enters, in the same order,
-// tests their triangles with the same arithmetic in the same order, and stops where that walk
-// stops. That needs all rays to order every node's children alike, which a shared origin
+// walk would have at that node, enters every leaf with triangles that walk enters, in the same
+// order, tests their triangles with the same arithmetic in the same order, and stops where that
+// walk stops. That needs all rays to order every node's children alike, which a shared origin
 // guarantees but at a plane through the origin itself, where the rays' direction signs decide:
 // packets from several origins, and the rare packet that meets such a plane with mixed signs,
 // take the single-ray walk. The same walk answers occlusion (shadow rays from one point).

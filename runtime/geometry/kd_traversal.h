@@ -97,7 +97,18 @@ KDPM_HD KDPM_INLINE void walk(const GeometryView& g, const Ray& ray, LeafVisitor
                 tmin = tplane;
             } else {
                 assert(sp < kMaxKdDepth && "kd-tree deeper than kMaxKdTreeDepth");
-                if (sp < kMaxKdDepth) {
+#if defined(__CUDA_ARCH__)
+                const bool far_empty = false;
+#else
+                // An empty far leaf is not pushed. Visiting it could only stop the walk where the
+                // next pop stops it anyway (the next entry starts where its segment ends), or,
+                // at an exact tie, leave leaves to visit that cannot hold a nearer hit: the same
+                // hits. Photon shooting 0.97-0.98x the time; primary and shadow rays the same.
+                // Measured on CPUs only: on a GPU it would add a load nobody has timed.
+                const KdNode far = g.nodes[second];
+                const bool far_empty = far.is_leaf() && far.count() == 0;
+#endif
+                if (sp < kMaxKdDepth && !far_empty) {
                     stack_node[sp] = second;
                     stack_tmin[sp] = tplane;
                     stack_tmax[sp] = tmax;

@@ -57,14 +57,27 @@ KDPM_HD KDPM_INLINE std::uint32_t first_equal(const float* v, std::uint32_t n, f
 
 }  // namespace portable
 
+#if KDPM_KNN_SSE2
+// The largest of the four lanes.
+inline float max_of_lanes(__m128 m) {
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_cvtss_f32(m);
+}
+
+// v with the lanes whose id equals `slot` set to `value`.
+inline __m128 replace_lanes(__m128 v, __m128i ids, __m128i slot, __m128 value) {
+    const __m128 m = _mm_castsi128_ps(_mm_cmpeq_epi32(ids, slot));
+    return _mm_or_ps(_mm_and_ps(m, value), _mm_andnot_ps(m, v));
+}
+#endif
+
 // The largest of v[0..n), n a multiple of 4.
 KDPM_HD KDPM_INLINE float max_of(const float* v, std::uint32_t n) {
 #if KDPM_KNN_SSE2
     __m128 m = _mm_loadu_ps(v);
     for (std::uint32_t i = 4; i < n; i += 4) m = _mm_max_ps(m, _mm_loadu_ps(v + i));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_cvtss_f32(m);
+    return max_of_lanes(m);
 #else
     return portable::max_of(v, n);
 #endif
@@ -157,18 +170,6 @@ public:
     }
 
 private:
-#if KDPM_KNN_SSE2
-    // v with the lanes whose id equals `slot` set to `value`.
-    static __m128 replace_lanes(__m128 v, __m128i ids, __m128i slot, __m128 value) {
-        const __m128 m = _mm_castsi128_ps(_mm_cmpeq_epi32(ids, slot));
-        return _mm_or_ps(_mm_and_ps(m, value), _mm_andnot_ps(m, v));
-    }
-    static float max_of_lanes(__m128 m) {
-        m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-        m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-        return _mm_cvtss_f32(m);
-    }
-#endif
     KDPM_HD KDPM_INLINE void find_farthest() {
         farthest_ = max_of(block_max_, block_groups_);
         const std::uint32_t b = first_equal(block_max_, block_groups_, farthest_);

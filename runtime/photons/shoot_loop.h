@@ -89,7 +89,7 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         const PhotonPathResult* result_items = nullptr;
         if constexpr (requires { requires Device::arrays_on_host; }) {
             if (order == PathOrder::sorted_waves && n <= shoot_waves_detail::kWaveMaxBatch &&
-                settings.max_bounces <= 255) {
+                settings.max_bounces <= shoot_waves_detail::kWaveMaxBounces) {
                 shoot_batch_in_waves(dev, geometry, lights, settings, first, n, results.data(), hits, reserve,
                                      intersect);
                 result_items = results.data();
@@ -108,7 +108,7 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
             append_path_hits(slot_items, per_path, result_items, n, batch_stored, hits);
         }
         for (std::uint64_t i = 0; i < n; ++i) rays += result_items[i].rays;
-        if (progress) progress(static_cast<double>(first + n - first_path) / static_cast<double>(end_path - first_path));
+        if (progress) progress(static_cast<double>(done) / static_cast<double>(end_path - first_path));
     }
     return rays;
 }

@@ -93,7 +93,13 @@ struct WaveGatherPass {
 // among the path's stored ones, packed as place * 256 + index (a path stores at most 256), or
 // kWaveNotStored.
 inline constexpr std::uint32_t kWaveNotStored = ~0u;
-inline constexpr std::uint64_t kWaveMaxBatch = (std::uint64_t{1} << 24) - 1;  // places pack below kWaveNotStored
+inline constexpr std::uint32_t kWaveIndexBits = 8;
+inline constexpr std::uint32_t kWaveIndexMask = (1u << kWaveIndexBits) - 1;
+// A path stores at most max_bounces + 1 photons, so their indices fit the index bits.
+inline constexpr std::uint32_t kWaveMaxBounces = kWaveIndexMask;
+// Places pack below kWaveNotStored.
+inline constexpr std::uint64_t kWaveMaxBatch = (std::uint64_t{1} << (32 - kWaveIndexBits)) - 1;
+constexpr std::uint32_t wave_place(std::uint32_t place, std::uint32_t index) { return place << kWaveIndexBits | index; }
 
 // One ray of each path, in ray order: the stored photon (if any) to wave_hits[j] and its place in
 // the shot to where[j]; if the path goes on, sorted[j] is its next state and next[j] its rank in
@@ -122,7 +128,7 @@ struct WaveStepPass {
         bool stores = false;
         const bool goes_on = continue_photon_path(geometry, settings, hit, st, &wave_hits[j], stores);
         const auto place = static_cast<std::uint32_t>(st.path - first);
-        where[j] = stores ? place << 8 | st.stored : kWaveNotStored;
+        where[j] = stores ? wave_place(place, st.stored) : kWaveNotStored;
         st.stored = static_cast<std::uint16_t>(st.stored + (stores ? 1 : 0));
         if (goes_on) {
             next[j] = WaveRank{key(st), static_cast<std::uint32_t>(j)};
@@ -144,16 +150,16 @@ struct WavePlacePass {
     PhotonHit* out = nullptr;
     void operator()(std::uint64_t e) const {
         const std::uint32_t w = where[e];
-        if (w != kWaveNotStored) out[path_start[w >> 8] + (w & 0xffu)] = wave_hits[e];
+        if (w != kWaveNotStored) out[path_start[w >> kWaveIndexBits] + (w & kWaveIndexMask)] = wave_hits[e];
     }
 };
 
 }  // namespace shoot_waves_detail
 
-// Paths first .. first + n - 1 (n <= kWaveMaxBatch, max_bounces <= 255), as n work items of
-// ShootPathsPass would trace them: each path's result to results[i] and the batch's photons
-// appended to `hits` in path order, after reserve(photons of the batch) has had its say on hits'
-// capacity. `dev` runs the passes (a CpuDevice).
+// Paths first .. first + n - 1 (n <= kWaveMaxBatch, max_bounces <= kWaveMaxBounces), as n work
+// items of ShootPathsPass would trace them: each path's result to results[i] and the batch's
+// photons appended to `hits` in path order, after reserve(photons of the batch) has had its say on
+// hits' capacity. `dev` runs the passes (a CpuDevice).
 template <class Device, class ClosestHit, class Reserve>
 void shoot_batch_in_waves(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                           const ShootSettings& settings, std::uint64_t first, std::uint64_t n,

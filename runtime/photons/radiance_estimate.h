@@ -347,14 +347,14 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     return out;
 }
 
-// estimate_radiance started from the bound the hints give at `position` (RadiusHints), which
-// then remember this estimate's radius when it found all k photons.
+// estimate_radiance started from the bound the hints give at `position` on the surface of
+// `normal` (RadiusHints), which then remember this estimate's radius when it found all k photons.
 KDPM_HD inline RadianceEstimate estimate_radiance_near(const PhotonMapView& map, glm::vec3 position, glm::vec3 normal,
                                                        glm::vec3 albedo, const RadianceEstimateParams& params,
                                                        KnnHeap& heap, RadiusHints& hints, FilterMemo* memo = nullptr) {
     const RadianceEstimate e =
-        estimate_radiance(map, position, normal, albedo, params, heap, hints.hint(position), memo);
-    if (!params.fixed_radius && e.count == clamp_gather_k(params.k)) hints.remember(position, e.radius);
+        estimate_radiance(map, position, normal, albedo, params, heap, hints.hint(position, normal), memo);
+    if (!params.fixed_radius && e.count == clamp_gather_k(params.k)) hints.remember(position, normal, e.radius);
     return e;
 }
 

@@ -62,6 +62,42 @@ TEST_CASE("A query's k-th distance plus the distance to a nearby point bounds th
     }
 }
 
+TEST_CASE("Radius hints come only from queries on the same surface", "[photons][hints]") {
+    const glm::vec3 up(0.0f, 1.0f, 0.0f), side(1.0f, 0.0f, 0.0f);
+    const glm::vec3 tilted = glm::normalize(glm::vec3(0.1f, 1.0f, 0.0f));  // 5.7 degrees off up
+    RadiusHints hints;
+    hints.remember(glm::vec3(0.0f), side, 0.1f);
+    CHECK(hints.hint(glm::vec3(0.0f), up) == 0.0f);  // the wall beside the floor gives none
+    CHECK(hints.hint(glm::vec3(0.0f), tilted) == 0.0f);
+    CHECK(hints.hint(glm::vec3(0.0f), side) == 0.1f);
+    hints.remember(glm::vec3(1.0f, 0.0f, 0.0f), up, 0.5f);
+    CHECK(hints.hint(glm::vec3(0.0f), up) == Approx(1.5f));  // the nearer wall query is passed over
+    CHECK(hints.hint(glm::vec3(0.0f)) == 0.1f);  // an unfiltered search takes every bound
+    RadiusHints unfiltered;
+    unfiltered.remember(glm::vec3(0.0f), 0.1f);
+    CHECK(unfiltered.hint(glm::vec3(0.0f), up) == 0.0f);  // no surface: no hint for a filtered search
+    // A full set of mixed surfaces (the CPU's four-wide path) gives the float of a one-by-one
+    // minimum over the queries whose normal is within kSameSurfaceCos.
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int round = 0; round < 200; ++round) {
+        RadiusHints full;
+        const glm::vec3 normals[] = {up, side, tilted, glm::normalize(glm::vec3(0.01f, 1.0f, 0.0f))};
+        for (std::uint32_t i = 0; i < RadiusHints::kRemembered; ++i)
+            full.remember(glm::vec3(u(rng), u(rng), u(rng)), normals[rng() % 4], 0.2f * u(rng));
+        const glm::vec3 q(u(rng), u(rng), u(rng));
+        const glm::vec3 n = normals[rng() % 4];
+        float least = 0.0f;
+        for (std::uint32_t j = 0; j < RadiusHints::kRemembered; ++j) {
+            if (n.x * full.nx[j] + n.y * full.ny[j] + n.z * full.nz[j] < RadiusHints::kSameSurfaceCos) continue;
+            const float dx = q.x - full.px[j], dy = q.y - full.py[j], dz = q.z - full.pz[j];
+            const float bound = full.radius[j] + std::sqrt(dx * dx + dy * dy + dz * dz);
+            least = least == 0.0f || bound < least ? bound : least;
+        }
+        REQUIRE(full.hint(q, n) == least);
+    }
+}
+
 TEST_CASE("An estimate started from any radius hint equals the estimate without one", "[photons][hints]") {
     auto set = test::synthetic_photons(20000, 31);
     auto tree = build_photon_tree(set.hits, PhotonTreeOptions{});

@@ -113,8 +113,7 @@ PanelActions draw_control_panel(const PanelModel& m) {
         for (ViewKind v : kViews) {
             if (v == ViewKind::photon_density && !m.have_photons) continue;
             if (ImGui::Selectable(view_name(v), v == o.view) && v != o.view) {
-                // Entering or leaving the density view changes what is rendered, not just shown.
-                act.rerender |= v == ViewKind::photon_density || o.view == ViewKind::photon_density;
+                act.rerender |= view_switch_renders(o.view, v);
                 o.view = v;
                 act.recompose = true;
             }

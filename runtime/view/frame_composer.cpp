@@ -88,9 +88,16 @@ glm::vec3 heat_color(float t) {
 }
 
 Image compose_view(const RenderResult& frame, const std::vector<float>& density, const ViewOptions& options) {
+    // A frame rendered for another view lacks the depth or normal AOV until the one asked for
+    // arrives: it is shown shaded meanwhile, not black.
+    const std::size_t pixels = static_cast<std::size_t>(frame.linear.width) * frame.linear.height;
     switch (options.view) {
-        case ViewKind::depth: return depth_view(frame);
-        case ViewKind::normal: return normal_view(frame);
+        case ViewKind::depth:
+            if (frame.aovs.depth.size() == pixels) return depth_view(frame);
+            break;
+        case ViewKind::normal:
+            if (frame.aovs.normal.size() == pixels * 3) return normal_view(frame);
+            break;
         case ViewKind::photon_density: return density_view(frame, density);
         case ViewKind::shaded: break;
     }

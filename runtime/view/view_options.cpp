@@ -52,6 +52,23 @@ void ViewOptions::next_mode(bool have_photons) {
     }
 }
 
+AovSet aovs_for_view(ViewKind v) {
+    AovSet aovs;
+    switch (v) {
+        case ViewKind::shaded: break;
+        case ViewKind::depth: aovs.depth = true; break;
+        case ViewKind::normal: aovs.normal = true; break;
+        case ViewKind::photon_density: aovs.position = aovs.normal = true; break;
+    }
+    return aovs;
+}
+
+bool view_switch_renders(ViewKind from, ViewKind to) {
+    if ((from == ViewKind::photon_density) != (to == ViewKind::photon_density)) return true;
+    const AovSet a = aovs_for_view(from), b = aovs_for_view(to);
+    return a.depth != b.depth || a.normal != b.normal || a.position != b.position || a.triangle != b.triangle;
+}
+
 void ViewOptions::next_view(bool have_photons) {
     switch (view) {
         case ViewKind::shaded: view = ViewKind::depth; break;

@@ -135,14 +135,12 @@ private:
             // itself only has to supply the hit points, so it is rendered as cheaply as possible.
             s.mode = RenderMode::direct;
             s.light_samples = 1;
-            s.aovs.position = true;
             job.density_k = options_.k;
         }
         s.camera = camera_.record();
         s.camera->width = width_;
         s.camera->height = height_;
-        s.aovs.depth = true;
-        s.aovs.normal = true;
+        s.aovs = aovs_for_view(options_.view);
         s.post.exposure_stops = options_.exposure_stops;
         s.post.tone_map = options_.tone_map;
         return job;
@@ -228,9 +226,7 @@ private:
                 case GLFW_KEY_F12: save_unique(); break;
                 default: break;
             }
-            // Entering or leaving the density view changes what is rendered, not just shown.
-            if ((old_view == ViewKind::photon_density) != (options_.view == ViewKind::photon_density))
-                view_changed = true;
+            if (view_switch_renders(old_view, options_.view)) view_changed = true;
             recompose_ = true;
         }
     }

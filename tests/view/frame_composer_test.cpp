@@ -72,6 +72,15 @@ TEST_CASE("frame composer depth and normal views", "[view][composer]") {
     o.view = ViewKind::normal;
     Image n = compose_view(r, {}, o);
     CHECK(n.rgb == std::vector<float>{0.5f, 0.5f, 1.0f, 0.5f, 1.0f, 0.5f});
+    // A frame without the view's AOV (rendered for another view) is shown shaded meanwhile.
+    RenderResult bare = two_pixel_frame();
+    bare.aovs = AovImages{};
+    ViewOptions shaded;
+    o.view = ViewKind::depth;
+    CHECK(compose_view(bare, {}, o).rgb == compose_view(bare, {}, shaded).rgb);
+    o.view = ViewKind::normal;
+    CHECK(compose_view(bare, {}, o).rgb == compose_view(bare, {}, shaded).rgb);
+    CHECK(compose_view(bare, {}, o).rgb != n.rgb);
     o.view = ViewKind::photon_density;
     Image p = compose_view(r, {100.0f, 0.0f}, o);
     CHECK(p.rgb[0] + p.rgb[1] + p.rgb[2] > 0.0f);

@@ -62,3 +62,19 @@ TEST_CASE("view options cycle tone mappers and bound the exposure", "[view][opti
     CHECK_THROWS_AS(parse_view("sideways"), std::invalid_argument);
     CHECK(key_help_text().find("F12") != std::string::npos);
 }
+
+TEST_CASE("each view asks only for the AOVs it shows, and a switch renders anew when those differ",
+          "[view][options]") {
+    CHECK_FALSE(aovs_for_view(ViewKind::shaded).any());
+    const AovSet depth = aovs_for_view(ViewKind::depth), normal = aovs_for_view(ViewKind::normal),
+                 density = aovs_for_view(ViewKind::photon_density);
+    CHECK((depth.depth && !depth.normal && !depth.position));
+    CHECK((normal.normal && !normal.depth && !normal.position));
+    CHECK((density.position && density.normal && !density.depth));
+    const ViewKind views[] = {ViewKind::shaded, ViewKind::depth, ViewKind::normal, ViewKind::photon_density};
+    for (ViewKind from : views) {
+        CHECK_FALSE(view_switch_renders(from, from));
+        for (ViewKind to : views)
+            if (to != from) CHECK(view_switch_renders(from, to));  // no two views need the same frame
+    }
+}

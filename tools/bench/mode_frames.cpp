@@ -32,8 +32,8 @@ double median_frame_ms(Renderer& renderer, const RenderSettings& settings, int f
 }
 
 // kdpm-view's full-resolution frame once the camera stops (its first refinement step): one
-// sample per pixel with the depth and normal AOVs, then the shaded view composed and converted
-// to the 8-bit pixels the window uploads.
+// sample per pixel with the AOVs the shaded view needs (aovs_for_view: none), then that view
+// composed and converted to the 8-bit pixels the window uploads.
 double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t height, int frames) {
     RenderSettings s;
     s.width = width;
@@ -42,8 +42,7 @@ double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t he
     s.passes = 1;
     s.mode = RenderMode::photons;
     s.k = 32;
-    s.aovs.depth = true;
-    s.aovs.normal = true;
+    s.aovs = aovs_for_view(ViewKind::shaded);
     ViewOptions view;
     view.mode = RenderMode::photons;
     view.k = 32;

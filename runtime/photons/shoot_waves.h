@@ -90,8 +90,8 @@ struct WaveGatherPass {
 };
 
 // Where a wave's ray stored its photon: the path's place in the batch and the photon's index
-// among the path's stored ones, packed as place * 256 + index (a path stores at most 256), or
-// kWaveNotStored.
+// among the path's stored ones, packed by wave_place (a path stores at most kWaveMaxBounces + 1,
+// so the index fits kWaveIndexBits), or kWaveNotStored.
 inline constexpr std::uint32_t kWaveNotStored = ~0u;
 inline constexpr std::uint32_t kWaveIndexBits = 8;
 inline constexpr std::uint32_t kWaveIndexMask = (1u << kWaveIndexBits) - 1;

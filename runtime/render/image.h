@@ -19,6 +19,7 @@ struct Image {
 struct AovSet {
     bool depth = false, normal = false, position = false, triangle = false;
     bool any() const { return depth || normal || position || triangle; }
+    bool operator==(const AovSet&) const = default;
 };
 
 struct AovImages {

@@ -65,8 +65,7 @@ AovSet aovs_for_view(ViewKind v) {
 
 bool view_switch_renders(ViewKind from, ViewKind to) {
     if ((from == ViewKind::photon_density) != (to == ViewKind::photon_density)) return true;
-    const AovSet a = aovs_for_view(from), b = aovs_for_view(to);
-    return a.depth != b.depth || a.normal != b.normal || a.position != b.position || a.triangle != b.triangle;
+    return aovs_for_view(from) != aovs_for_view(to);
 }
 
 void ViewOptions::next_view(bool have_photons) {

@@ -1,6 +1,7 @@
 // Device detection through the CUDA runtime. A missing driver is reported, not fatal.
 #include "runtime/backend/cuda_device.h"
 
+#include <chrono>
 #include <stdexcept>
 
 #include <cuda_runtime.h>
@@ -33,6 +34,12 @@ void use_cuda_device(int index) {
         throw std::runtime_error("CUDA: there is no device " + std::to_string(index) + " (this machine has " +
                                  std::to_string(s.device_count) + ", numbered from 0)");
     cuda_check(cudaSetDevice(index), "cudaSetDevice");
+}
+
+double start_cuda_device() {
+    const auto start = std::chrono::steady_clock::now();
+    cuda_check(cudaFree(nullptr), "initialising the device");
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace kdpm

@@ -13,4 +13,6 @@ CudaDeviceStatus cuda_device_status() {
 
 void use_cuda_device(int) { throw std::runtime_error("this build of kdpm has no CUDA backend"); }
 
+double start_cuda_device() { throw std::runtime_error("this build of kdpm has no CUDA backend"); }
+
 }  // namespace kdpm

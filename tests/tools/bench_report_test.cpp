@@ -52,3 +52,39 @@ TEST_CASE("kdpm-bench's ratio column and verdicts read the paired ratios", "[too
     CHECK_THAT(out, Catch::Contains("| 11.0 | 10.0 | 1.08x | <= 1.05 | MISSED |"));
     CHECK_THAT(out, Catch::Contains("the median of the ratios of passes run in pairs"));
 }
+
+TEST_CASE("kdpm-bench shows CUDA's frames and shot beside the CPU's only where a device measured them", "[tools][bench]") {
+    SceneBenchResult r = with_k32_frame("sponza", 100.0);
+    r.shoot_ms[2] = 150.0;
+    ModeFrames& m = r.mode_frames;
+    m.width = m.height = 512;
+    m.threads = 2;
+    m.viewer_threads = 2;
+    m.viewer_frame_ms = 125.0;
+    m.rows.push_back({"photons", "k=32", 130.0, 0.0, 1});
+    m.rows.push_back({"sppm", "4 passes", 800.0, 0.0, 4});
+    const std::string cpu_only = format_report({r}, true);
+    CHECK_THAT(cpu_only, !Catch::Contains("CUDA"));
+    CHECK_THAT(cpu_only, Catch::Contains("| photons | k=32 | 130.0 | 7.69 |  |"));
+
+    r.shoot_cuda_ms = 12.5;
+    m.rows[0].cuda_frame_ms = 4.0;
+    m.rows[1].cuda_frame_ms = 40.0;
+    m.viewer_cuda_frame_ms = 8.0;
+    const std::string both = format_report({r}, true);
+    CHECK_THAT(both, Catch::Contains("| photon shooting, CUDA (ms) | 12.5 |"));
+    CHECK_THAT(both, Catch::Contains("| CUDA frame (ms) | CUDA frames/s | CUDA per pass (ms) |"));
+    CHECK_THAT(both, Catch::Contains("| photons | k=32 | 130.0 | 7.69 |  | 4.00 | 250.00 |  |"));
+    // The per-pass column divides by the passes on each backend.
+    CHECK_THAT(both, Catch::Contains("| sppm | 4 passes | 800.0 | 1.25 | 200.0 | 40.0 | 25.00 | 10.0 |"));
+    CHECK_THAT(both, Catch::Contains("- viewer frame, rendered on CUDA (composed on the CPU): 8.0 ms, 125.0 frames/s"));
+    // The two-core target stays the CPU's.
+    CHECK_THAT(both, Catch::Contains("2 threads: 125.0 ms, 8.0 frames/s (target >= 8 frames/s): met"));
+
+    // A device that failed part way says why under the table.
+    m.rows[1].cuda_frame_ms = 0.0;
+    m.cuda_note = "CUDA frames stopped: CUDA kernel execution: out of memory";
+    const std::string stopped = format_report({r}, true);
+    CHECK_THAT(stopped, Catch::Contains("| sppm | 4 passes | 800.0 | 1.25 | 200.0 | - | - |  |"));
+    CHECK_THAT(stopped, Catch::Contains("- CUDA frames stopped: CUDA kernel execution: out of memory"));
+}

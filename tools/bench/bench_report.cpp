@@ -38,6 +38,7 @@ std::string offline_table(const SceneBenchResult& r, bool md) {
     t.rows.push_back({"photons emitted / stored", fmt("%llu / %llu", (unsigned long long)r.photons_emitted,
                                                       (unsigned long long)r.photons_stored)});
     for (auto [threads, v] : r.shoot_ms) t.rows.push_back({fmt("photon shooting, %d thr (ms)", threads), ms(v)});
+    if (r.shoot_cuda_ms > 0) t.rows.push_back({"photon shooting, CUDA (ms)", ms(r.shoot_cuda_ms)});
     for (auto [threads, v] : r.photon_tree_ms) t.rows.push_back({fmt("photon VVH trees build, %d thr (ms)", threads), ms(v)});
     t.rows.push_back({"photon balanced trees build, all thr (ms)", ms(r.balanced_tree_ms)});
     t.rows.push_back({"load .kdg + .kdp until first frame (ms)", ms(r.load_ms)});

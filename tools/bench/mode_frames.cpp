@@ -1,6 +1,7 @@
 #include "tools/bench/mode_frames.h"
 
 #include <algorithm>
+#include <exception>
 
 #include "runtime/backend/thread_limit.h"
 #include "runtime/render/renderer.h"
@@ -113,6 +114,23 @@ ModeFrames measure_mode_frames(const SceneViews& scene, const ModeFrameConfig& c
             out.rows.push_back(k.row);
         }
     }
+    if (c.cuda) {
+        // A mode the device cannot render ends the CUDA column there, with its reason; the CPU's
+        // figures stand.
+        try {
+            Renderer renderer(scene, BackendKind::cuda);
+            for (std::size_t i = 0; i < cases.size(); ++i) {
+                if (c.say) c.say("full frame on CUDA, " + cases[i].row.mode + " (" + cases[i].row.settings + ")");
+                out.rows[i].cuda_frame_ms = median_frame_ms(renderer, cases[i].settings, c.frames);
+            }
+            if (photons) {
+                if (c.say) c.say("viewer frame (photons, k=32), CUDA");
+                out.viewer_cuda_frame_ms = viewer_frame_ms(renderer, c.width, c.height, c.frames);
+            }
+        } catch (const std::exception& e) {
+            out.cuda_note = std::string("CUDA frames stopped: ") + e.what();
+        }
+    }
     if (photons) {
         // The report's interactive claim is for two cores.
         out.viewer_threads = std::min(2, c.threads);
@@ -128,12 +146,20 @@ std::string format_mode_frames(const std::string& scene, const ModeFrames& f, bo
     const std::uint32_t width = f.width, height = f.height;
     if (f.rows.empty()) return {};
     auto ms = [](double v) { return v <= 0 ? std::string("-") : v < 10 ? fmt("%.2f", v) : fmt("%.1f", v); };
+    const bool cuda = std::any_of(f.rows.begin(), f.rows.end(), [](const ModeFrameRow& r) { return r.cuda_frame_ms > 0; });
+    auto rate = [](double v) { return v > 0 ? fmt("%.2f", 1000.0 / v) : std::string("-"); };
     Table t{{fmt("full frame per mode, %ux%u, %d threads", width, height, f.threads), "settings", "frame (ms)",
              "frames/s", "per pass (ms)"},
             {}};
-    for (const auto& r : f.rows)
-        t.rows.push_back({r.mode, r.settings, ms(r.frame_ms), r.frame_ms > 0 ? fmt("%.2f", 1000.0 / r.frame_ms) : "-",
-                          r.units > 1 ? ms(r.frame_ms / r.units) : ""});
+    if (cuda)
+        for (const char* h : {"CUDA frame (ms)", "CUDA frames/s", "CUDA per pass (ms)"}) t.header.push_back(h);
+    for (const auto& r : f.rows) {
+        t.rows.push_back({r.mode, r.settings, ms(r.frame_ms), rate(r.frame_ms), r.units > 1 ? ms(r.frame_ms / r.units) : ""});
+        if (cuda)
+            for (std::string cell : {ms(r.cuda_frame_ms), rate(r.cuda_frame_ms),
+                                     r.units > 1 && r.cuda_frame_ms > 0 ? ms(r.cuda_frame_ms / r.units) : std::string()})
+                t.rows.back().push_back(std::move(cell));
+    }
     std::string out = t.render(md);
     out += fmt("%s(medians of the frames after a warm-up frame; a frame over %.0f ms is timed once)\n", md ? "\n" : "",
                kTimedOnceMs);
@@ -146,6 +172,10 @@ std::string format_mode_frames(const std::string& scene, const ModeFrames& f, bo
                    md ? "\n" : "", f.viewer_threads, f.viewer_frame_ms, fps);
         out += target ? fmt(" (target >= 8 frames/s): %s\n", fps >= 8.0 ? "met" : "MISSED") : "\n";
     }
+    if (!f.cuda_note.empty()) out += fmt("%s- %s\n", md ? "\n" : "", f.cuda_note.c_str());
+    if (f.viewer_cuda_frame_ms > 0)
+        out += fmt("%s- viewer frame, rendered on CUDA (composed on the CPU): %.1f ms, %.1f frames/s\n", md ? "\n" : "",
+                   f.viewer_cuda_frame_ms, 1000.0 / f.viewer_cuda_frame_ms);
     return out;
 }
 

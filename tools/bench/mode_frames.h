@@ -16,6 +16,7 @@ struct ModeFrameRow {
     std::string mode;      // "photons", "final-gather", ...
     std::string settings;  // "k=32", "64 gather rays, cache on", ...
     double frame_ms = 0;   // median of whole frames
+    double cuda_frame_ms = 0;  // the same on CUDA; 0 when not measured
     int units = 1;         // sppm: passes in the frame (frame_ms / units is the time per pass)
 };
 
@@ -25,6 +26,8 @@ struct ModeFrames {
     std::vector<ModeFrameRow> rows;
     int viewer_threads = 0;      // two, or fewer on a smaller machine
     double viewer_frame_ms = 0;  // median: render + compose + 8-bit conversion
+    double viewer_cuda_frame_ms = 0;  // the same frame rendered on CUDA; 0 when not measured
+    std::string cuda_note;            // why the CUDA column stopped short; empty when it did not
 };
 
 struct ModeFrameConfig {
@@ -33,14 +36,16 @@ struct ModeFrameConfig {
     int threads = 1;          // all threads
     std::uint32_t gather_rays = 64;
     std::uint32_t sppm_passes = 4;
+    bool cuda = false;        // also on the CUDA backend (a device was started)
     std::function<void(const std::string&)> say;  // progress lines
 };
 
 // Photon modes are left out when the scene has no photon maps.
 ModeFrames measure_mode_frames(const SceneViews& scene, const ModeFrameConfig& config);
 
-// The table and the viewer's frame rate against its target (>= 8 frames per second on two cores,
-// Sponza 512x512); empty when nothing was measured.
+// The table (with CUDA columns where any CUDA frame was measured) and the viewer's frame rate
+// against its target (>= 8 frames per second on two cores, Sponza 512x512); empty when nothing
+// was measured.
 std::string format_mode_frames(const std::string& scene, const ModeFrames& frames, bool markdown);
 
 }  // namespace kdpm::bench

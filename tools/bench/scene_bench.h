@@ -77,6 +77,7 @@ struct SceneBenchResult {
     std::map<int, double> geometry_build_fast_ms;  // threads -> median, --quality fast
     QualityFigures quality;
     std::map<int, double> shoot_ms;            // threads -> one run (deterministic work)
+    double shoot_cuda_ms = 0;                  // the same shot on CUDA (median, device started), 0 without one
     std::map<int, double> photon_tree_ms;      // threads -> median (VVH, both maps)
     double balanced_tree_ms = 0;               // all threads, for comparison
     double load_ms = 0;                        // map .kdg + .kdp, until the first frame can start

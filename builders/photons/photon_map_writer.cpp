@@ -31,7 +31,7 @@ PhotonMapBuild build_photon_map_file(const PhotonHitSet& set, const PhotonTreeOp
     }
     const bool balanced = options.builder == PhotonTreeBuilder::balanced;
     metadata.parameters["builder"] = balanced ? "balanced" : "vvh";
-    metadata.parameters["leaf_size"] = std::to_string(options.leaf_size);
+    metadata.parameters["leaf_size"] = std::to_string(leaf_size_of(options));
     metadata.parameters["radius"] = options.query_radius > 0.0f ? std::to_string(options.query_radius) : "auto";
     metadata.statistics["photons"] = global.info.photon_count;
     metadata.statistics["caustic_photons"] = caustic.info.photon_count;

@@ -120,7 +120,7 @@ BuiltPhotonTree build_photon_tree(std::span<const PhotonHit> hits, const PhotonT
     Cell root = photon_build::parallel_photon_bounds(rec.data(), n);
 
     PhotonTreeOptions options = options_in;
-    options.leaf_size = std::max<std::uint32_t>(options.leaf_size, 1);
+    options.leaf_size = leaf_size_of(options);
     if (options.builder == PhotonTreeBuilder::vvh && !(options.query_radius > 0.0f)) {
         options.query_radius = photon_build::estimate_query_radius(rec.data(), n);
         if (!(options.query_radius > 0.0f) || !std::isfinite(options.query_radius)) {

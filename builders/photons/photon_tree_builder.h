@@ -13,11 +13,24 @@
 
 namespace kdpm {
 
+// Most photons in a leaf unless asked otherwise. VVH's buckets are large: its cost model
+// (vvh_split.h) stops splitting long before, where a node step costs more than the photons it
+// would spare a search, which the 16-wide leaf scan made cheap. The balanced tree has no cost
+// to stop it, so its classic small buckets.
+inline constexpr std::uint32_t kVvhLeafSize = 64;
+inline constexpr std::uint32_t kBalancedLeafSize = 16;
+
 struct PhotonTreeOptions {
     PhotonTreeBuilder builder = PhotonTreeBuilder::vvh;
-    std::uint32_t leaf_size = 16;  // most photons in a leaf (VVH may stop earlier by cost)
+    std::uint32_t leaf_size = 0;  // most photons in a leaf (VVH may stop earlier by cost); 0: the builder's
     float query_radius = 0.0f;    // VVH expected query radius; <= 0: estimated from the photons
 };
+
+// The leaf size the builder uses: the options' own, else its builder's default.
+inline std::uint32_t leaf_size_of(const PhotonTreeOptions& o) {
+    if (o.leaf_size > 0) return o.leaf_size;
+    return o.builder == PhotonTreeBuilder::balanced ? kBalancedLeafSize : kVvhLeafSize;
+}
 
 struct BuiltPhotonTree {
     PhotonTreeInfo info{};

@@ -11,9 +11,11 @@
 namespace kdpm::photon_build {
 
 struct VvhCosts {
-    // Measured on the kNN kernel (k = 32, Sponza's primary hits): an inner node step with its
-    // stack push and pop costs several photon distance tests; 6 gave the fastest queries.
-    float traverse = 6.0f;
+    // Measured on the frame's gather (Sponza, Conference room, Cornell box; k = 2, 32, 256): an
+    // inner node step with its stack push and pop costs many photon distance tests now that a
+    // leaf is scanned 16 photons at a time; 16 (with leaves of up to 64) gave the fastest
+    // gathers, where 6 (and 16-photon leaves) had before that scan.
+    float traverse = 16.0f;
     float photon = 1.0f;    // one photon distance test
 };
 

@@ -166,7 +166,7 @@ TEST_CASE("A node is ruled out only when the filter refuses every photon below i
 }
 
 TEST_CASE("A photon exactly at the filter's cosine keeps its leaf", "[photons][bounds]") {
-    const DecodedPhotonViews views(4000, 79);
+    const DecodedPhotonViews views(16000, 79);  // over 300 leaves of the default VVH tree
     const PhotonMapView& map = views.bounded;
     const std::uint64_t n = map.photon_count;
     std::mt19937 rng(81);

@@ -96,7 +96,7 @@ double queries_per_second(std::size_t n, const Body& body, bool single_thread) {
 }
 
 struct BenchOptions {
-    int photons = 0, bounces = 4, size = 512, leaf_size = static_cast<int>(PhotonTreeOptions{}.leaf_size);
+    int photons = 0, bounces = 4, size = 512, leaf_size = 0;  // 0: each builder's default
     int k_min = 2, k_max = 256, repeat = 3;
     int threads = 1;  // Embree's build workers
     bool nanoflann = true, embree = true;
@@ -219,7 +219,9 @@ int main(int argc, char** argv) {
         .option("photons", &o.photons, "N", "photon paths to shoot (default: the scene's, else 262144)", 0, 1 << 28)
         .option("bounces", &o.bounces, "B", "most bounces (default 4)", 0, 255)
         .option("size", &o.size, "PIXELS", "image width and height for the query points (default 512)", 1, 8192)
-        .option("leaf-size", &o.leaf_size, "N", "photon tree leaf size (default " + std::to_string(o.leaf_size) + ")", 1,
+        .option("leaf-size", &o.leaf_size, "N", "photon tree leaf size (default " + std::to_string(kVvhLeafSize) + " for VVH, " +
+                    std::to_string(kBalancedLeafSize) + " for the balanced tree)",
+                1,
                 4096)
         .option("k-max", &o.k_max, "K", "largest k (default 256; k = 2, 4, 8, ... up to it)", 2, 256)
         .option("k-min", &o.k_min, "K", "smallest k (default 2)", 1, 256)

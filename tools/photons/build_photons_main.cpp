@@ -25,12 +25,14 @@ using namespace kdpm;
 int main(int argc, char** argv) {
     std::string input, output;
     bool balanced = false, quiet = false;
-    int leaf_size = static_cast<int>(PhotonTreeOptions{}.leaf_size), threads = 0;
+    int leaf_size = 0, threads = 0;  // 0: the builder's default
     int irradiance_every = static_cast<int>(kDefaultIrradianceEvery);
     int irradiance_k = static_cast<int>(kDefaultIrradianceK);
     double radius = 0.0;
     // The help's defaults are the variables' initial values, so they follow the library's.
-    const std::string default_leaf = std::to_string(leaf_size), default_every = std::to_string(irradiance_every),
+    const std::string default_leaf = std::to_string(kVvhLeafSize) + "; " + std::to_string(kBalancedLeafSize) +
+                                     " with --balanced",
+                      default_every = std::to_string(irradiance_every),
                       default_k = std::to_string(irradiance_k);
     cli::Args args("kdpm-build-photons", "Builds the photon kd-tree file (.kdp) from photon hits (.kdph).");
     args.positional("PHOTONS.kdph", &input, "photon hits from kdpm-shoot-photons")

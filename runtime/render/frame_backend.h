@@ -17,7 +17,8 @@ public:
     // The photon density view over the scene's global map (see photon_density_pass.h).
     virtual std::vector<float> photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
                                               std::uint32_t k) = 0;
-    virtual double upload_ms() const { return 0.0; }
+    virtual double device_start_ms() const { return 0.0; }  // CUDA: creating the context
+    virtual double upload_ms() const { return 0.0; }        // CUDA: copying the scene to the device
     // Host memory the backend keeps between frames for its next frame's arrays.
     virtual std::uint64_t kept_bytes() const { return 0; }
 };

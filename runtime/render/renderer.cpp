@@ -122,6 +122,7 @@ Renderer::~Renderer() = default;
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
+double Renderer::device_start_ms() const { return impl_->device_start_ms(); }
 double Renderer::upload_ms() const { return impl_->upload_ms(); }
 
 std::vector<float> Renderer::photon_density(const std::vector<float>& positions, const std::vector<float>& normals,

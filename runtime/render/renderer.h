@@ -32,7 +32,8 @@ public:
                                       std::uint32_t k);
 
     BackendKind backend() const { return backend_; }
-    double upload_ms() const;  // CUDA: time to copy the scene to the device
+    double device_start_ms() const;  // CUDA: time to create the device's context (once a process)
+    double upload_ms() const;        // CUDA: time to copy the scene to the device
 
 private:
     SceneViews scene_;

@@ -192,7 +192,8 @@ int run(int argc, char** argv) {
                   << (settings.mode == RenderMode::sppm ? settings.passes : settings.spp)
                   << (settings.mode == RenderMode::sppm ? " passes" : " spp") << ", mode " << render_mode_name(settings.mode) << ", backend " << backend_name(selected.kind)
                   << "\n";
-        if (renderer.upload_ms() > 0) std::printf("  scene upload %.2f ms\n", renderer.upload_ms());
+        if (renderer.upload_ms() > 0)
+            std::printf("  device start %.2f ms, scene upload %.2f ms\n", renderer.device_start_ms(), renderer.upload_ms());
         std::cout << format_stage_table(result.times, scene.load_ms());
         for (const auto& p : written) std::cout << "  wrote " << p.string() << "\n";
     }

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     int irradiance_every = static_cast<int>(kDefaultIrradianceEvery);
     int irradiance_k = static_cast<int>(kDefaultIrradianceK);
     double radius = 0.0;
-    // The help's defaults are the variables' initial values, so they follow the library's.
+    // The help's defaults are the library's (the leaf size's 0 picks the builder's own).
     const std::string default_leaf = std::to_string(kVvhLeafSize) + "; " + std::to_string(kBalancedLeafSize) +
                                      " with --balanced",
                       default_every = std::to_string(irradiance_every),

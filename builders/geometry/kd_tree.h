@@ -27,6 +27,7 @@ struct KdTree {
     std::vector<std::uint32_t> leaf_indices;
     KdTreeStats stats;
     std::uint64_t repeated_triangles = 0;  // exact copies of an earlier triangle, left out
+    KdDepthLimits limits{};                // the depth limits the build used (recorded in the file)
 };
 
 // Beyond this many triangles in one leaf (many overlapping ones that no split separates; exact

@@ -28,6 +28,13 @@ std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t tri
     return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), cap);
 }
 
+std::uint32_t small_node_depth(const KdBuildParams& params, std::uint64_t triangles) {
+    const std::uint32_t limit = effective_max_depth(params, triangles);
+    if (params.max_depth > 0) return limit;
+    const double automatic = 4.0 + std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
+    return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), limit);
+}
+
 std::string_view quality_name(KdBuildQuality q) { return q == KdBuildQuality::fast ? "fast" : "high"; }
 
 std::optional<KdBuildQuality> parse_quality(std::string_view name) {
@@ -174,7 +181,8 @@ public:
             else if (triangle_is_usable(tris_[i])) root.tris.push_back(i);
         }
         if (root.tris.size() > kLocalMask) throw std::runtime_error("too many triangles for one kd-tree");
-        max_depth_ = effective_max_depth(params_, root.tris.size());
+        limits_ = KdDepthLimits::of(params_, root.tris.size());
+        tree.limits = limits_;
 
         AxisBox bounds{{0, 0, 0}, {0, 0, 0}};
         if (!root.tris.empty()) {
@@ -247,7 +255,7 @@ private:
     bool wants_binning(const NodeInput& in, std::uint32_t depth) const {
         const std::size_t n = in.tris.size();
         return in.binned && n >= params_.exact_below && n > static_cast<std::size_t>(std::max(params_.leaf_size, 0)) &&
-               depth < max_depth_;
+               limits_.may_split(depth, n);
     }
 
     // Distributes a binned node's triangles to its children in fixed chunks that run in parallel:
@@ -322,7 +330,7 @@ private:
     Split find_split(const NodeInput& in, std::uint32_t depth) const {
         Split best;
         const std::uint32_t n = static_cast<std::uint32_t>(in.tris.size());
-        if (n == 0 || n <= static_cast<std::uint32_t>(std::max(params_.leaf_size, 0)) || depth >= max_depth_)
+        if (n == 0 || n <= static_cast<std::uint32_t>(std::max(params_.leaf_size, 0)) || !limits_.may_split(depth, n))
             return best;
         const float area = box_area(in.cell);
         if (!(area > 0.0f)) return best;
@@ -628,7 +636,7 @@ private:
     std::span<const TriangleRecord> tris_;
     KdBuildParams params_;
     const std::function<void(double)>& progress_;
-    std::uint32_t max_depth_ = 0;
+    KdDepthLimits limits_{};
     double root_volume_ = 0.0;
     std::atomic<double> done_volume_{0.0};
 };

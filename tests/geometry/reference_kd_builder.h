@@ -33,7 +33,7 @@ public:
             for (std::uint32_t j : ids) copy = copy || same(tris_[i], tris_[j]);
             if (!copy) ids.push_back(i);
         }
-        max_depth_ = effective_max_depth(params_, ids.size());
+        limits_ = KdDepthLimits::of(params_, ids.size());
         AxisBox bounds{{0, 0, 0}, {0, 0, 0}};
         if (!ids.empty()) {
             for (int a = 0; a < 3; ++a) bounds.lo[a] = INFINITY, bounds.hi[a] = -INFINITY;
@@ -69,7 +69,7 @@ private:
         float best_pos = 0.0f;
         bool best_planar_left = true;
         const float area = box_area(cell);
-        if (n > 0 && n > static_cast<std::uint32_t>(params_.leaf_size) && depth < max_depth_ && area > 0.0f) {
+        if (n > 0 && n > static_cast<std::uint32_t>(params_.leaf_size) && limits_.may_split(depth, n) && area > 0.0f) {
             float best_cost = params_.intersection_cost * static_cast<float>(n);
             for (int k = 0; k < 3; ++k) {
                 if (!(cell.hi[k] > cell.lo[k])) continue;
@@ -136,7 +136,7 @@ private:
 
     std::span<const TriangleRecord> tris_;
     KdBuildParams params_;
-    std::uint32_t max_depth_ = 0;
+    KdDepthLimits limits_{};
 };
 
 }  // namespace kdpm::test

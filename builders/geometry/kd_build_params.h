@@ -37,14 +37,15 @@ std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t tri
 inline constexpr std::uint32_t kSmallLeafTriangles = 16;
 
 // Where an automatic build stops splitting small nodes: 4 + log2(triangles). Below it the sweep
-// still finds splits it rates cheaper, but traced no faster (Sponza, Conference room: primary rays
-// and photon shooting 0.95-1.00x the time with half to a quarter of the nodes; README). An
-// explicit max_depth is a plain limit: the small-node depth is max_depth then.
+// still finds splits it rates cheaper, but the trees traced no faster with them (Sponza,
+// Conference room: primary rays and photon shooting 0.97-1.00x the time with a third to a quarter
+// of the nodes; README). An explicit max_depth is a plain limit: the small-node depth is
+// max_depth then.
 std::uint32_t small_node_depth(const KdBuildParams& params, std::uint64_t triangles);
 
 struct KdDepthLimits {
-    std::uint32_t max_depth;   // no node at this depth is split
-    std::uint32_t small_depth;  // nor one of at most kSmallLeafTriangles triangles at this depth
+    std::uint32_t max_depth;    // no node at this depth (or deeper) is split
+    std::uint32_t small_depth;  // nor one of at most kSmallLeafTriangles triangles from this depth on
     static KdDepthLimits of(const KdBuildParams& params, std::uint64_t triangles) {
         return {effective_max_depth(params, triangles), small_node_depth(params, triangles)};
     }

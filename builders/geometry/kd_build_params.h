@@ -29,26 +29,19 @@ struct KdBuildParams {
     std::uint32_t clip_below = 12;     // fast: exact-sweep nodes with fewer triangles cut boxes, not triangles
 };
 
-// The depth limit the build uses for `triangles` triangles.
-std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t triangles);
-
 // Nodes of at most this many triangles (four SIMD groups of a leaf test) stop splitting at the
 // small-node depth.
 inline constexpr std::uint32_t kSmallLeafTriangles = 16;
 
-// Where an automatic build stops splitting small nodes: 4 + log2(triangles). Below it the sweep
-// still finds splits it rates cheaper, but the trees traced no faster with them (Sponza,
+// The depth limits a build of `triangles` triangles uses. Automatically, 8 + 1.3 log2(triangles)
+// for every node, and 4 + log2(triangles) for nodes of at most kSmallLeafTriangles: below it the
+// sweep still finds splits it rates cheaper, but the trees traced no faster with them (Sponza,
 // Conference room: primary rays and photon shooting 0.97-1.00x the time with a third to a quarter
-// of the nodes; README). An explicit max_depth is a plain limit: the small-node depth is
-// max_depth then.
-std::uint32_t small_node_depth(const KdBuildParams& params, std::uint64_t triangles);
-
+// of the nodes; README). An explicit max_depth is a plain limit for every node.
 struct KdDepthLimits {
     std::uint32_t max_depth;    // no node at this depth (or deeper) is split
     std::uint32_t small_depth;  // nor one of at most kSmallLeafTriangles triangles from this depth on
-    static KdDepthLimits of(const KdBuildParams& params, std::uint64_t triangles) {
-        return {effective_max_depth(params, triangles), small_node_depth(params, triangles)};
-    }
+    static KdDepthLimits of(const KdBuildParams& params, std::uint64_t triangles);
     // Whether a node of n triangles at `depth` may be split.
     bool may_split(std::uint32_t depth, std::uint64_t n) const {
         return depth < max_depth && (depth < small_depth || n > kSmallLeafTriangles);

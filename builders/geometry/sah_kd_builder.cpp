@@ -21,18 +21,15 @@
 
 namespace kdpm {
 
-std::uint32_t effective_max_depth(const KdBuildParams& params, std::uint64_t triangles) {
+KdDepthLimits KdDepthLimits::of(const KdBuildParams& params, std::uint64_t triangles) {
     const std::uint32_t cap = kMaxKdTreeDepth - 4;
-    if (params.max_depth > 0) return std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
-    const double automatic = 8.0 + 1.3 * std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
-    return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), cap);
-}
-
-std::uint32_t small_node_depth(const KdBuildParams& params, std::uint64_t triangles) {
-    const std::uint32_t limit = effective_max_depth(params, triangles);
-    if (params.max_depth > 0) return limit;
-    const double automatic = 4.0 + std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
-    return std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(automatic)), limit);
+    if (params.max_depth > 0) {
+        const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
+        return {limit, limit};
+    }
+    const double log2_n = std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
+    const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(8.0 + 1.3 * log2_n)), cap);
+    return {limit, std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(4.0 + log2_n)), limit)};
 }
 
 std::string_view quality_name(KdBuildQuality q) { return q == KdBuildQuality::fast ? "fast" : "high"; }

@@ -71,6 +71,7 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     meta.parameters["empty_bonus"] = text(params.empty_bonus);
     meta.parameters["max_depth"] = std::to_string(tree.limits.max_depth);
     meta.parameters["small_node_depth"] = std::to_string(tree.limits.small_depth);
+    meta.parameters["small_node_triangles"] = std::to_string(tree.limits.small_triangles);
     meta.parameters["leaf_size"] = std::to_string(params.leaf_size);
     meta.parameters["quality"] = std::string(quality_name(params.quality));
     if (params.quality == KdBuildQuality::fast) {

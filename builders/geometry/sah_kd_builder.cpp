@@ -25,11 +25,14 @@ KdDepthLimits KdDepthLimits::of(const KdBuildParams& params, std::uint64_t trian
     const std::uint32_t cap = kMaxKdTreeDepth - 4;
     if (params.max_depth > 0) {
         const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
-        return {limit, limit};
+        return {limit, limit, kSmallLeafTriangles};
     }
     const double log2_n = std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
     const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(8.0 + 1.3 * log2_n)), cap);
-    return {limit, std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(4.0 + log2_n)), limit)};
+    const bool fast = params.quality == KdBuildQuality::fast;
+    const double small_base = fast ? 2.0 : 4.0;
+    const std::uint32_t small = static_cast<std::uint32_t>(std::lround(small_base + log2_n));
+    return {limit, std::min<std::uint32_t>(small, limit), fast ? kFastSmallLeafTriangles : kSmallLeafTriangles};
 }
 
 std::string_view quality_name(KdBuildQuality q) { return q == KdBuildQuality::fast ? "fast" : "high"; }

@@ -1,5 +1,5 @@
-// The automatic depth limits: nodes of at most kSmallLeafTriangles triangles stop splitting at
-// the small-node depth, larger ones go on to the full limit (a dense object far down a large,
+// The automatic depth limits: small nodes (at most kSmallLeafTriangles triangles, or
+// kFastSmallLeafTriangles in a fast build) stop splitting at the small-node depth, larger ones go on to the full limit (a dense object far down a large,
 // mostly empty scene keeps small leaves), and an explicit max_depth is a plain limit.
 #include <catch2/catch.hpp>
 
@@ -80,6 +80,7 @@ TEST_CASE("the automatic depth limits: 8 + 1.3 log2 N, and 4 + log2 N for small 
     const KdDepthLimits l = KdDepthLimits::of(automatic, 66454);  // the Sponza's triangles
     CHECK(l.max_depth == 29);
     CHECK(l.small_depth == 20);
+    CHECK(l.small_triangles == kSmallLeafTriangles);
     CHECK(l.may_split(19, 1));
     CHECK_FALSE(l.may_split(20, kSmallLeafTriangles));
     CHECK(l.may_split(20, kSmallLeafTriangles + 1));
@@ -92,7 +93,25 @@ TEST_CASE("the automatic depth limits: 8 + 1.3 log2 N, and 4 + log2 N for small 
     CHECK(KdDepthLimits::of(automatic, 1).small_depth <= KdDepthLimits::of(automatic, 1).max_depth);
 }
 
-TEST_CASE("below the small-node depth only nodes of more than 16 triangles are split", "[geometry][builder]") {
+TEST_CASE("a fast build stops small nodes two levels sooner and counts up to 32 triangles as small",
+          "[geometry][builder]") {
+    KdBuildParams fast;
+    fast.quality = KdBuildQuality::fast;
+    const KdDepthLimits l = KdDepthLimits::of(fast, 66454);
+    CHECK(l.max_depth == 29);
+    CHECK(l.small_depth == 18);
+    CHECK(l.small_triangles == kFastSmallLeafTriangles);
+    CHECK(l.may_split(17, 1));
+    CHECK_FALSE(l.may_split(18, kFastSmallLeafTriangles));
+    CHECK(l.may_split(18, kFastSmallLeafTriangles + 1));
+    // An explicit limit is the same plain limit in both qualities.
+    fast.max_depth = 12;
+    const KdDepthLimits e = KdDepthLimits::of(fast, 66454);
+    CHECK(e.max_depth == 12);
+    CHECK(e.small_depth == 12);
+}
+
+TEST_CASE("below the small-node depth only nodes of more than the small size are split", "[geometry][builder]") {
     const KdBuildParams p = test::quality_params(GENERATE(KdBuildQuality::high, KdBuildQuality::fast));
     INFO("quality: " << quality_name(p.quality));
     const auto tris = ball_in_a_hall();
@@ -102,7 +121,7 @@ TEST_CASE("below the small-node depth only nodes of more than 16 triangles are s
     for (const NodeFacts& f : inner_nodes(tree)) {
         CHECK(f.depth < tree.limits.max_depth);
         if (f.depth >= tree.limits.small_depth) {
-            CHECK(f.triangles > kSmallLeafTriangles);
+            CHECK(f.triangles > tree.limits.small_triangles);
             ++deep;
         }
     }

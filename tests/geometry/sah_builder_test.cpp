@@ -72,6 +72,8 @@ TEST_CASE("the SAH builder matches the reference on planar grids and duplicates"
 TEST_CASE("a fast build clipping everywhere is the exact build when no node reaches the binning size", "[geometry][builder]") {
     const auto soup = test::random_soup(3000, 41, 0.1f);
     KdBuildParams p;
+    // One plain depth limit for both: automatically, a fast build stops small nodes sooner.
+    p.max_depth = 22;
     p.quality = KdBuildQuality::high;
     const KdTree high = build_sah_kd_tree(soup, p);
     p.quality = KdBuildQuality::fast;

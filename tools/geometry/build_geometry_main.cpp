@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     args.positional("INPUT", &input, "scene card (.json) or mesh file")
         .option("output", &output, "FILE", "output .kdg file");
     cli::add_sah_cost_options(args, costs);
-    args.option("max-depth", &params.max_depth, "N", "depth limit, 0 = automatic: 8 + 1.3 log2(triangles), nodes of at most 16 triangles 4 + log2(triangles) (default 0)", 0, 60)
+    args.option("max-depth", &params.max_depth, "N", "depth limit, 0 = automatic: 8 + 1.3 log2(triangles), nodes of at most 16 triangles 4 + log2(triangles) (fast: at most 32, 2 + log2(triangles)) (default 0)", 0, 60)
         .option("leaf-size", &params.leaf_size, "N", "nodes with at most N triangles stay leaves (default 0)", 0, 1 << 20)
         .option("quality", "fast|high",
                 "fast: binned SAH in large nodes, exact below --exact-below triangles, crossing triangles bounded by "

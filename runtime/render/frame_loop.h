@@ -19,6 +19,7 @@
 #include "runtime/render/photon_gather_pass.h"
 #include "runtime/render/photon_tile_gather_pass.h"
 #include "runtime/render/render_settings.h"
+#include "runtime/render/sample_average.h"
 #include "runtime/render/shade_pass.h"
 #include "runtime/render/sppm_loop.h"
 #include "runtime/render/stage_times.h"
@@ -131,10 +132,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
 
     std::vector<glm::vec3> copied;  // only where the device's arrays are not host memory
     const glm::vec3* sums = items_on_host(dev, accum, copied);
-    linear = Image(static_cast<int>(plan.width), static_cast<int>(plan.height));
-    const float inv_spp = 1.0f / static_cast<float>(spp);
-    for (std::uint64_t i = 0; i < pixels; ++i)
-        for (int c = 0; c < 3; ++c) linear.rgb[i * 3 + c] = sums[i][c] * inv_spp;
+    average_samples(sums, plan.width, plan.height, 1.0f / static_cast<float>(spp), linear);
 
     aov_arrays.to_host(dev, aovs);
     times.transfer_ms += watch.lap_ms();

@@ -24,6 +24,11 @@ Image expose(const Image& linear, const PostSettings& s);
 // Tone-mapped, sRGB-encoded values in [0, 1] (what PNG files receive).
 Image to_display(const Image& exposed, ToneMap tone_map);
 
+// Both of a frame's finished images, what expose and to_display make, written into `exposed`
+// and `display` (resized to the frame, their storage reused): one pass over the pixels where
+// there is no bloom.
+void post_process(const Image& linear, const PostSettings& s, Image& exposed, Image& display);
+
 float tone_map_value(float v, ToneMap tone_map);
 float srgb_encode(float linear01);
 

@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "runtime/render/frame_backend.h"
+#include "runtime/render/image_pool.h"
+#include "runtime/render/post_process.h"
 #include "runtime/shading/ray_offset.h"
 #include "runtime/render/frame_memory.h"
 
@@ -106,7 +109,8 @@ SppmPlan sppm_plan(const RenderSettings& settings, const SceneViews& scene, std:
 
 }  // namespace
 
-Renderer::Renderer(const SceneViews& scene, BackendKind backend) : scene_(scene), backend_(backend) {
+Renderer::Renderer(const SceneViews& scene, BackendKind backend)
+    : scene_(scene), backend_(backend), images_(std::make_unique<ImagePool>()) {
     if (backend == BackendKind::cuda) {
 #if defined(KDPM_HAVE_CUDA)
         impl_ = make_cuda_frame_backend(scene_);
@@ -124,6 +128,12 @@ Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 double Renderer::device_start_ms() const { return impl_->device_start_ms(); }
 double Renderer::upload_ms() const { return impl_->upload_ms(); }
+
+void Renderer::recycle(RenderResult&& frame) {
+    images_->give(std::move(frame.linear));
+    images_->give(std::move(frame.exposed));
+    images_->give(std::move(frame.display));
+}
 
 std::vector<float> Renderer::photon_density(const std::vector<float>& positions, const std::vector<float>& normals,
                                             std::uint32_t k) {
@@ -193,10 +203,13 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     }
 
     RenderResult result;
+    const int width = static_cast<int>(plan.width), height = static_cast<int>(plan.height);
+    result.linear = images_->take(width, height);
     impl_->run(plan, result.linear, result.aovs, result.times);
     StopWatch watch;
-    result.exposed = expose(result.linear, settings.post);
-    result.display = to_display(result.exposed, settings.post.tone_map);
+    result.exposed = images_->take(width, height);
+    result.display = images_->take(width, height);
+    post_process(result.linear, settings.post, result.exposed, result.display);
     result.post = settings.post;
     result.times.post_ms += watch.lap_ms();
     return result;

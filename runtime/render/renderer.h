@@ -13,6 +13,7 @@
 namespace kdpm {
 
 class FrameBackend;
+class ImagePool;
 struct KeptIrradianceCache;
 
 class Renderer {
@@ -25,6 +26,9 @@ public:
     // Throws std::runtime_error (one line) on an impossible request (e.g. a photon mode without
     // photon maps, or a zero-sized image).
     RenderResult render(const RenderSettings& settings);
+    // Gives a finished frame's images back for the next frames to reuse (optional: a caller
+    // rendering frame after frame saves the page faults of fresh 3 MiB images).
+    void recycle(RenderResult&& frame);
 
     // The photon density view of a rendered frame's position and normal AOVs (3 floats per
     // pixel), on this renderer's backend over the scene's global map; zeros without one.
@@ -40,6 +44,7 @@ private:
     BackendKind backend_;
     std::unique_ptr<FrameBackend> impl_;
     std::unique_ptr<KeptIrradianceCache> kept_cache_;  // RenderSettings::keep_irradiance_cache
+    std::unique_ptr<ImagePool> images_;                // storage of recycled frames' images
 };
 
 }  // namespace kdpm

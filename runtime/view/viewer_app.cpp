@@ -176,6 +176,7 @@ private:
         const StageTimes& t = frame.result.times;
         history_.push({static_cast<float>(t.ray_tracing_ms), static_cast<float>(t.photon_gather_ms + frame.density_ms),
                        static_cast<float>(t.shading_ms), static_cast<float>(t.post_ms + t.transfer_ms)});
+        if (last_) renderer_.recycle(std::move(last_->result));
         last_ = std::move(frame);
         recompose_ = true;
         ++frames_shown_;

@@ -52,6 +52,7 @@ double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t he
         RenderResult r = renderer.render(s);
         Image shown = resize_nearest(compose_view(r, {}, view), static_cast<int>(width), static_cast<int>(height));
         to_rgb8(shown, bytes);
+        renderer.recycle(std::move(r));  // as kdpm-view gives each replaced frame back
     };
     frame();  // warm-up
     return median_ms(frames, frame);

@@ -1,0 +1,15 @@
+#pragma once
+// A frame's linear image from its per-pixel sums of samples, on the host's threads (one thread
+// took 2 ms of a 512x512 frame).
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/render/image.h"
+
+namespace kdpm {
+
+// out (resized to width x height, its storage reused) holds sums[i] * inv_samples for each pixel i.
+void average_samples(const glm::vec3* sums, std::uint32_t width, std::uint32_t height, float inv_samples, Image& out);
+
+}  // namespace kdpm

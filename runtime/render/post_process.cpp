@@ -72,6 +72,9 @@ float srgb_encode(float x) { return srgb_of_unit(x); }
 
 namespace {
 
+// A linear value scaled by the exposure; a NaN or infinite one (a broken sample) shows black.
+inline float exposed_value(float v, float scale) { return std::isfinite(v) ? v * scale : 0.0f; }
+
 // Separable Gaussian blur of one direction (dx, dy) over an RGB image, clamped at the edges.
 Image blur(const Image& in, const std::vector<float>& weights, int dx, int dy) {
     Image out(in.width, in.height);
@@ -114,8 +117,7 @@ Image expose(const Image& linear, const PostSettings& s) {
     out.rgb.resize(linear.rgb.size());
     const float scale = std::exp2(s.exposure_stops);
     cpu_parallel_for(linear.rgb.size(), [&](std::uint64_t i) {
-        const float v = linear.rgb[i];
-        out.rgb[i] = std::isfinite(v) ? v * scale : 0.0f;
+        out.rgb[i] = exposed_value(linear.rgb[i], scale);
     }, 16384);
     if (s.bloom && out.width > 0 && out.height > 0) add_bloom(out, s);
     return out;
@@ -171,7 +173,7 @@ void post_process(const Image& linear, const PostSettings& s, Image& exposed, Im
         float* to_exposed = exposed.rgb.data();
         float* to_display = display.rgb.data();
         cpu_parallel_for(linear.rgb.size(), [=](std::uint64_t i) {
-            const float v = std::isfinite(in[i]) ? in[i] * scale : 0.0f;  // as expose
+            const float v = exposed_value(in[i], scale);
             to_exposed[i] = v;
             to_display[i] = srgb_of_unit(curve(v));
         }, 4096);

@@ -13,6 +13,13 @@ struct Image {
     Image() = default;
     Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0.0f) {}
     std::size_t pixel_count() const { return static_cast<std::size_t>(width) * height; }
+    // This image as a w x h one for a writer of every pixel: the storage is kept when large
+    // enough (a recycled frame's, Renderer::recycle), and what it held is not cleared.
+    void reshape(int w, int h) {
+        width = w;
+        height = h;
+        rgb.resize(pixel_count() * 3);
+    }
 };
 
 // Arbitrary output variables of the first surface each pixel's centre ray hits.

@@ -148,25 +148,14 @@ Image to_display(const Image& exposed, ToneMap tone_map) {
     return out;
 }
 
-namespace {
-
-// `image` as a width x height image, its storage reused when large enough (contents undefined).
-void shape_like(Image& image, const Image& like) {
-    image.width = like.width;
-    image.height = like.height;
-    image.rgb.resize(like.rgb.size());
-}
-
-}  // namespace
-
 void post_process(const Image& linear, const PostSettings& s, Image& exposed, Image& display) {
     if (s.bloom) {
         exposed = expose(linear, s);
         display = to_display(exposed, s.tone_map);
         return;
     }
-    shape_like(exposed, linear);
-    shape_like(display, linear);
+    exposed.reshape(linear.width, linear.height);
+    display.reshape(linear.width, linear.height);
     const float scale = std::exp2(s.exposure_stops);
     with_tone_curve(s.tone_map, [&](auto curve) {
         const float* in = linear.rgb.data();

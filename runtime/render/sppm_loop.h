@@ -97,11 +97,7 @@ void run_sppm(Device& dev, const GeometryView& geometry, const LightSelection& l
     }
 
     dev.to_host(state, host_state);
-    // Every pixel is written below: the image's storage (a recycled frame's, Renderer::recycle)
-    // is reshaped, not allocated again.
-    linear.width = static_cast<int>(width);
-    linear.height = static_cast<int>(height);
-    linear.rgb.resize(pixels * 3);
+    linear.reshape(static_cast<int>(width), static_cast<int>(height));  // every pixel written below
     for (std::uint64_t i = 0; i < pixels; ++i) {
         const glm::vec3 l = sppm_radiance(host_state[i], sppm.passes);
         for (int c = 0; c < 3; ++c) linear.rgb[i * 3 + c] = l[c];

@@ -1,6 +1,7 @@
 // The automatic depth limits: small nodes (at most kSmallLeafTriangles triangles, or
-// kFastSmallLeafTriangles in a fast build) stop splitting at the small-node depth, larger ones go on to the full limit (a dense object far down a large,
-// mostly empty scene keeps small leaves), and an explicit max_depth is a plain limit.
+// kFastSmallLeafTriangles in a fast build) stop splitting at the small-node depth, larger ones
+// go on to the full limit (a dense object far down a large, mostly empty scene keeps small
+// leaves), and an explicit max_depth is a plain limit.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -75,17 +76,20 @@ std::vector<NodeFacts> inner_nodes(const KdTree& tree) {
 
 }  // namespace
 
-TEST_CASE("the automatic depth limits: 8 + 1.3 log2 N, and 4 + log2 N for small nodes", "[geometry][builder]") {
-    const KdBuildParams automatic;
-    const KdDepthLimits l = KdDepthLimits::of(automatic, 66454);  // the Sponza's triangles
+// The automatic limits for the Sponza's 66,454 triangles: nodes of more than `small` triangles go
+// on to depth 29, smaller ones stop at `small_depth`; an explicit --max-depth 12 is a plain limit.
+static void check_sponza_limits(KdBuildQuality quality, std::uint32_t small_depth, std::uint32_t small) {
+    KdBuildParams automatic;
+    automatic.quality = quality;
+    const KdDepthLimits l = KdDepthLimits::of(automatic, 66454);
     CHECK(l.max_depth == 29);
-    CHECK(l.small_depth == 20);
-    CHECK(l.small_triangles == kSmallLeafTriangles);
-    CHECK(l.may_split(19, 1));
-    CHECK_FALSE(l.may_split(20, kSmallLeafTriangles));
-    CHECK(l.may_split(20, kSmallLeafTriangles + 1));
+    CHECK(l.small_depth == small_depth);
+    CHECK(l.small_triangles == small);
+    CHECK(l.may_split(small_depth - 1, 1));
+    CHECK_FALSE(l.may_split(small_depth, small));
+    CHECK(l.may_split(small_depth, small + 1));
     CHECK_FALSE(l.may_split(29, 100000));
-    KdBuildParams explicit_limit;
+    KdBuildParams explicit_limit = automatic;
     explicit_limit.max_depth = 12;
     const KdDepthLimits e = KdDepthLimits::of(explicit_limit, 66454);
     CHECK(e.max_depth == 12);
@@ -93,22 +97,13 @@ TEST_CASE("the automatic depth limits: 8 + 1.3 log2 N, and 4 + log2 N for small 
     CHECK(KdDepthLimits::of(automatic, 1).small_depth <= KdDepthLimits::of(automatic, 1).max_depth);
 }
 
+TEST_CASE("the automatic depth limits: 8 + 1.3 log2 N, and 4 + log2 N for small nodes", "[geometry][builder]") {
+    check_sponza_limits(KdBuildQuality::high, 20, kSmallLeafTriangles);
+}
+
 TEST_CASE("a fast build stops small nodes two levels sooner and counts up to 32 triangles as small",
           "[geometry][builder]") {
-    KdBuildParams fast;
-    fast.quality = KdBuildQuality::fast;
-    const KdDepthLimits l = KdDepthLimits::of(fast, 66454);
-    CHECK(l.max_depth == 29);
-    CHECK(l.small_depth == 18);
-    CHECK(l.small_triangles == kFastSmallLeafTriangles);
-    CHECK(l.may_split(17, 1));
-    CHECK_FALSE(l.may_split(18, kFastSmallLeafTriangles));
-    CHECK(l.may_split(18, kFastSmallLeafTriangles + 1));
-    // An explicit limit is the same plain limit in both qualities.
-    fast.max_depth = 12;
-    const KdDepthLimits e = KdDepthLimits::of(fast, 66454);
-    CHECK(e.max_depth == 12);
-    CHECK(e.small_depth == 12);
+    check_sponza_limits(KdBuildQuality::fast, 18, kFastSmallLeafTriangles);
 }
 
 TEST_CASE("below the small-node depth only nodes of more than the small size are split", "[geometry][builder]") {

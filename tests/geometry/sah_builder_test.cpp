@@ -115,3 +115,25 @@ TEST_CASE("a fast build cuts boxes instead of triangles below clip_below, for a 
     CHECK(cut.stats.sah_cost > clipped.stats.sah_cost);  // boxes bound the triangles less tightly
     CHECK(cut.stats.sah_cost <= 1.06 * clipped.stats.sah_cost);
 }
+
+TEST_CASE("a build's statistics, taken while its pieces are built, are measure_kd_tree's bit for bit",
+          "[geometry][builder]") {
+    // 20,000 triangles: several pieces built apart (split at the top, flat below) in both qualities.
+    const auto soup = test::random_soup(20000, 43, 0.05f);
+    for (KdBuildQuality q : {KdBuildQuality::high, KdBuildQuality::fast}) {
+        INFO("quality: " << quality_name(q));
+        KdBuildParams p;
+        p.quality = q;
+        const KdTree tree = build_sah_kd_tree(soup, p);
+        const KdTreeStats walked = measure_kd_tree(tree.nodes, tree.bounds, p);
+        CHECK(tree.stats.nodes == walked.nodes);
+        CHECK(tree.stats.leaves == walked.leaves);
+        CHECK(tree.stats.empty_leaves == walked.empty_leaves);
+        CHECK(tree.stats.leaf_references == walked.leaf_references);
+        CHECK(tree.stats.max_depth == walked.max_depth);
+        CHECK(tree.stats.max_leaf_triangles == walked.max_leaf_triangles);
+        CHECK(std::memcmp(&tree.stats.mean_leaf_triangles, &walked.mean_leaf_triangles, sizeof(double)) == 0);
+        CHECK(std::memcmp(&tree.stats.sah_cost, &walked.sah_cost, sizeof(double)) == 0);
+        CHECK(tree.stats.leaves > 1000);
+    }
+}

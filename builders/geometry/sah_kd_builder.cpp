@@ -153,13 +153,43 @@ struct Split {
 };
 
 // A subtree in file layout with node and leaf indices relative to its own arrays.
-// With each node, the area of its cell and for the deepest leaf its depth, for the tree's
-// statistics (measure_kd_tree's, taken while the pieces are built on all threads).
+// With each node, the area of its cell and its depth, for the tree's statistics (measure_kd_tree's,
+// taken while the pieces are built on all threads).
 struct Flat {
     std::vector<KdNode> nodes;
     std::vector<std::uint32_t> leaf;
-    std::vector<float> area;  // box_area of each node's cell
-    std::uint32_t max_depth = 0;
+    std::vector<float> area;            // box_area of each node's cell
+    std::vector<std::uint32_t> depth;  // of each node
+};
+
+// The sums behind KdTreeStats, taken node by node in node order (depth first, below child
+// first): measure_kd_tree walks a finished tree, the builder reads the areas its pieces kept,
+// and both add the same doubles in the same order, so the cost has the same bits.
+class TreeStatsSum {
+public:
+    void inner(double area) { inner_area_ += area; }
+    void leaf(std::uint32_t count, double area, std::uint32_t depth) {
+        ++s_.leaves;
+        s_.leaf_references += count;
+        s_.max_leaf_triangles = std::max(s_.max_leaf_triangles, count);
+        if (count == 0) ++s_.empty_leaves;
+        else ++nonempty_;
+        s_.max_depth = std::max(s_.max_depth, depth);
+        leaf_area_weighted_ += area * count;
+    }
+    KdTreeStats finish(std::uint64_t nodes, const AxisBox& bounds, const KdBuildParams& params) {
+        s_.nodes = nodes;
+        const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
+        s_.mean_leaf_triangles =
+            nonempty_ ? static_cast<double>(s_.leaf_references) / static_cast<double>(nonempty_) : 0.0;
+        s_.sah_cost = (params.traversal_cost * inner_area_ + params.intersection_cost * leaf_area_weighted_) / root_area;
+        return s_;
+    }
+
+private:
+    KdTreeStats s_;
+    double inner_area_ = 0.0, leaf_area_weighted_ = 0.0;
+    std::uint64_t nonempty_ = 0;
 };
 
 // Large nodes are split into pieces whose subtrees are built in parallel; the choice depends on
@@ -599,6 +629,7 @@ private:
         const std::size_t index = out.nodes.size();
         out.nodes.push_back(KdNode{});
         out.area.push_back(box_area(in.cell));
+        out.depth.push_back(depth);
         build_flat(left, depth + 1, out);
         out.nodes[index] = KdNode::inner(s.axis, s.pos, checked_index(out.nodes.size()));
         build_flat(right, depth + 1, out);
@@ -607,7 +638,7 @@ private:
     void make_leaf(const NodeInput& in, std::uint32_t depth, Flat& out) {
         out.nodes.push_back(KdNode::leaf(checked_index(out.leaf.size()), checked_index(in.tris.size())));
         out.area.push_back(box_area(in.cell));
-        out.max_depth = std::max(out.max_depth, depth);
+        out.depth.push_back(depth);
         out.leaf.insert(out.leaf.end(), in.tris.begin(), in.tris.end());
         if (progress_ && root_volume_ > 0.0) {
             const double done = done_volume_.fetch_add(volume(in.cell)) + volume(in.cell);
@@ -647,40 +678,24 @@ private:
     // same (node) order, so the same bits, without walking the tree again on one thread (2% of a
     // fast Sponza build at two threads). The tests hold the two equal.
     KdTreeStats statistics(const Piece& root, std::size_t node_count, const AxisBox& bounds) const {
-        KdTreeStats s;
-        s.nodes = node_count;
-        if (node_count == 0) return s;
-        double inner_area = 0.0, leaf_area_weighted = 0.0;
-        std::uint64_t nonempty = 0;
+        if (node_count == 0) return KdTreeStats{};
+        TreeStatsSum sum;
         auto add = [&](const Piece& piece, auto&& self) -> void {
             if (piece.is_split) {
-                inner_area += piece.area;
+                sum.inner(piece.area);
                 self(*piece.below, self);
                 self(*piece.above, self);
                 return;
             }
             const Flat& f = piece.flat;
-            s.max_depth = std::max(s.max_depth, f.max_depth);
             for (std::size_t i = 0; i < f.nodes.size(); ++i) {
                 const KdNode& n = f.nodes[i];
-                const double area = f.area[i];
-                if (!n.is_leaf()) {
-                    inner_area += area;
-                    continue;
-                }
-                ++s.leaves;
-                s.leaf_references += n.count();
-                s.max_leaf_triangles = std::max(s.max_leaf_triangles, n.count());
-                if (n.count() == 0) ++s.empty_leaves;
-                else ++nonempty;
-                leaf_area_weighted += area * n.count();
+                if (n.is_leaf()) sum.leaf(n.count(), f.area[i], f.depth[i]);
+                else sum.inner(f.area[i]);
             }
         };
         add(root, add);
-        const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
-        s.mean_leaf_triangles = nonempty ? static_cast<double>(s.leaf_references) / static_cast<double>(nonempty) : 0.0;
-        s.sah_cost = (params_.traversal_cost * inner_area + params_.intersection_cost * leaf_area_weighted) / root_area;
-        return s;
+        return sum.finish(node_count, bounds, params_);
     }
 
     static std::size_t node_total(const Piece& piece) {
@@ -721,13 +736,9 @@ KdTree build_sah_kd_tree(std::span<const TriangleRecord> triangles, const KdBuil
 }
 
 KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds, const KdBuildParams& params) {
-    KdTreeStats s;
-    s.nodes = nodes.size();
-    if (nodes.empty()) return s;
-    const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
-    // Depth first, below child first: node order, which is the order the sums have always been
-    // taken in (so the cost keeps its bits). The below child follows at once with the cell cut in
-    // place; only above children wait on the stack.
+    if (nodes.empty()) return KdTreeStats{};
+    // Depth first, below child first: node order. The below child follows at once with the cell
+    // cut in place; only above children wait on the stack.
     struct Entry {
         std::uint32_t node, depth;
         AxisBox cell;
@@ -735,13 +746,12 @@ KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds
     std::vector<Entry> stack;
     std::uint32_t node = 0, depth = 0;
     AxisBox cell = bounds;
-    double inner_area = 0.0, leaf_area_weighted = 0.0;
-    std::uint64_t nonempty = 0;
+    TreeStatsSum sum;
     for (;;) {
         const KdNode& n = nodes[node];
         const double area = box_area(cell);
         if (!n.is_leaf()) {
-            inner_area += area;
+            sum.inner(area);
             Entry above{n.above_child(), depth + 1, cell};
             above.cell.lo[n.axis()] = n.split();
             stack.push_back(above);
@@ -750,22 +760,14 @@ KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds
             ++depth;
             continue;
         }
-        ++s.leaves;
-        s.leaf_references += n.count();
-        s.max_leaf_triangles = std::max(s.max_leaf_triangles, n.count());
-        if (n.count() == 0) ++s.empty_leaves;
-        else ++nonempty;
-        s.max_depth = std::max(s.max_depth, depth);
-        leaf_area_weighted += area * n.count();
+        sum.leaf(n.count(), area, depth);
         if (stack.empty()) break;
         node = stack.back().node;
         depth = stack.back().depth;
         cell = stack.back().cell;
         stack.pop_back();
     }
-    s.mean_leaf_triangles = nonempty ? static_cast<double>(s.leaf_references) / static_cast<double>(nonempty) : 0.0;
-    s.sah_cost = (params.traversal_cost * inner_area + params.intersection_cost * leaf_area_weighted) / root_area;
-    return s;
+    return sum.finish(nodes.size(), bounds, params);
 }
 
 }  // namespace kdpm

@@ -264,32 +264,28 @@ private:
         std::vector<bool> repeated;
         std::vector<AxisBox> boxes(count);
         std::vector<std::uint8_t> inside(count);
+        auto clip_to_cell = [&](const tbb::blocked_range<std::size_t>& r) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                inside[i] = 0;
+                if (keys[i] == kUnusableTriangleKey) continue;
+                double v[3][3];
+                triangle_vertices(tris_[i], v);
+                inside[i] = clip_triangle_to_box(v, cell, boxes[i]);
+            }
+        };
         tbb::parallel_invoke([&] { repeated = repeated_triangles(tris_, keys); },
-                             [&] {
-                                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
-                                                   [&](const tbb::blocked_range<std::size_t>& r) {
-                                                       for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                                                           if (keys[i] == kUnusableTriangleKey) {
-                                                               inside[i] = 0;
-                                                               continue;
-                                                           }
-                                                           double v[3][3];
-                                                           triangle_vertices(tris_[i], v);
-                                                           inside[i] = clip_triangle_to_box(v, cell, boxes[i]);
-                                                       }
-                                                   });
-                             });
+                             [&] { tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096), clip_to_cell); });
         taken = 0;
         repeated_count = 0;
         for (std::size_t i = 0; i < count; ++i) {
-            if (repeated[i]) ++repeated_count;
-            else if (keys[i] != kUnusableTriangleKey) ++taken;
+            if (repeated[i]) {
+                ++repeated_count;
+            } else if (keys[i] != kUnusableTriangleKey) {
+                ++taken;
+                if (inside[i]) root.tris.push_back(static_cast<std::uint32_t>(i)), root.boxes.push_back(boxes[i]);
+            }
         }
         if (taken > kLocalMask) throw std::runtime_error("too many triangles for one kd-tree");
-        root.tris.reserve(taken);
-        root.boxes.reserve(taken);
-        for (std::size_t i = 0; i < count; ++i)
-            if (inside[i] && !repeated[i]) root.tris.push_back(static_cast<std::uint32_t>(i)), root.boxes.push_back(boxes[i]);
         root.cell = cell;
         root.binned = true;
         return cell;
@@ -575,18 +571,22 @@ private:
 
     std::unique_ptr<Piece> build_piece(NodeInput&& in, std::uint32_t depth) {
         auto piece = std::make_unique<Piece>();
+        // A split piece: its children's subtrees built in parallel.
+        auto split_into = [&](const Split& s, NodeInput& left, NodeInput& right) {
+            in.release();
+            piece->is_split = true;
+            piece->split = s;
+            piece->area = box_area(in.cell);
+            tbb::parallel_invoke([&] { piece->below = build_piece(std::move(left), depth + 1); },
+                                 [&] { piece->above = build_piece(std::move(right), depth + 1); });
+            return std::move(piece);
+        };
         if (wants_binning(in, depth)) {
             const BinnedSplit s = find_binned_split(in.boxes, in.cell, params_);
             if (s.axis >= 0) {
                 NodeInput left, right;
                 split_binned(in, s, left, right);
-                in.release();
-                piece->is_split = true;
-                piece->split = Split{s.axis, s.pos, s.planar_left};
-                piece->area = box_area(in.cell);
-                tbb::parallel_invoke([&] { piece->below = build_piece(std::move(left), depth + 1); },
-                                     [&] { piece->above = build_piece(std::move(right), depth + 1); });
-                return piece;
+                return split_into(Split{s.axis, s.pos, s.planar_left}, left, right);
             }
         }
         to_exact(in);
@@ -595,13 +595,7 @@ private:
             if (s.axis >= 0) {
                 NodeInput left, right;
                 split_node(in, s, left, right);
-                in.release();
-                piece->is_split = true;
-                piece->split = s;
-                piece->area = box_area(in.cell);
-                tbb::parallel_invoke([&] { piece->below = build_piece(std::move(left), depth + 1); },
-                                     [&] { piece->above = build_piece(std::move(right), depth + 1); });
-                return piece;
+                return split_into(s, left, right);
             }
         }
         build_flat(in, depth, piece->flat);

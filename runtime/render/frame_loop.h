@@ -80,10 +80,12 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     times.transfer_ms += watch.lap_ms();
 
     const std::uint32_t spp = plan.settings.spp < 1 ? 1 : plan.settings.spp;
+    // The samples first .. end - 1 of the run (Renderer::render checked that they fit).
+    const std::uint32_t first = plan.settings.first_sample, end = first + spp;
     auto report = [&](std::uint32_t sample, int passes_done) {
-        if (plan.settings.progress) plan.settings.progress((sample * 3.0 + passes_done) / (3.0 * spp));
+        if (plan.settings.progress) plan.settings.progress(((sample - first) * 3.0 + passes_done) / (3.0 * spp));
     };
-    for (std::uint32_t s = 0; s < spp && plan.path_trace; ++s) {
+    for (std::uint32_t s = first; s < end && plan.path_trace; ++s) {
         PathPass path{geometry, lights, plan.camera, fb, s, plan.settings.max_depth, plan.settings.max_bounces,
                       plan.epsilon};
         dev.launch(pixels, path);
@@ -93,7 +95,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
     IrradianceCache fresh_cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius);
     IrradianceCache& cache = plan.kept_cache ? *plan.kept_cache : fresh_cache;
     const std::uint64_t records_before = cache.tree.records().size(), points_before = cache.points;
-    for (std::uint32_t s = 0; s < spp && !plan.path_trace; ++s) {
+    for (std::uint32_t s = first; s < end && !plan.path_trace; ++s) {
         const TracePass trace{geometry, plan.camera, fb, s, plan.settings.max_depth, plan.epsilon};
         if constexpr (packets)
             dev.launch(PacketTracePass::work_items(plan.width, plan.height), PacketTracePass{trace});

@@ -34,6 +34,12 @@ inline constexpr std::uint32_t kMaxGatherRays = 65536;
 struct RenderSettings {
     std::uint32_t width = 0, height = 0;  // 0: the camera record's
     std::uint32_t spp = 1;
+    // A frame may be one part of a longer run of samples (kdpm-view's refinement resumes where
+    // its last frame stopped): it takes samples first_sample .. first_sample + spp - 1 of a run of
+    // sequence_spp (0: first_sample + spp). The camera jitters whenever the run has more than one
+    // sample, so the parts' averages, weighted by their spp, average to the whole run's image.
+    std::uint32_t first_sample = 0;
+    std::uint32_t sequence_spp = 0;
     RenderMode mode = RenderMode::photons;
     std::uint32_t k = 0;                  // photons per estimate; 0: the scene's default (else 100)
     float max_radius = -1.0f;             // photon search limit; < 0: automatic, 0: unlimited

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -159,8 +160,17 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
         throw std::runtime_error("camera field of view must be in (0, 180) degrees");
     plan.progressive = settings.mode == RenderMode::sppm;
-    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height,
-                                             plan.progressive ? settings.passes : settings.spp);
+    const std::uint32_t spp = std::max<std::uint32_t>(1, settings.spp);
+    if (settings.first_sample > std::numeric_limits<std::uint32_t>::max() - spp)
+        throw std::runtime_error("samples from " + std::to_string(settings.first_sample) + " on: too many for one run");
+    const std::uint32_t sequence = settings.sequence_spp ? settings.sequence_spp : settings.first_sample + spp;
+    if (settings.first_sample + spp > sequence)
+        throw std::runtime_error("samples " + std::to_string(settings.first_sample) + ".." +
+                                 std::to_string(settings.first_sample + spp - 1) + " are outside a run of " +
+                                 std::to_string(sequence));
+    if (plan.progressive && settings.first_sample != 0)
+        throw std::runtime_error("sppm renders whole runs of passes: no first sample can be given");
+    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, plan.progressive ? settings.passes : sequence);
     plan.epsilon = render_ray_offset(scene_.geometry.info);
     plan.direct_light = settings.mode != RenderMode::photons;
     plan.path_trace = settings.mode == RenderMode::path;

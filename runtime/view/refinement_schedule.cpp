@@ -14,6 +14,7 @@ RefinementSchedule::RefinementSchedule(std::uint32_t width, std::uint32_t height
 void RefinementSchedule::restart(bool preview) {
     preview_ = preview && divisor_ > 1;
     spp_ = 1;
+    shown_ = 0;
     done_ = false;
 }
 
@@ -24,11 +25,15 @@ std::optional<RefinementStep> RefinementSchedule::current() const {
         s.width = std::max<std::uint32_t>(1, width_ / divisor_);
         s.height = std::max<std::uint32_t>(1, height_ / divisor_);
         s.spp = 1;
+        s.first_sample = 0;
+        s.sequence_spp = 1;
         s.preview = true;
     } else {
         s.width = width_;
         s.height = height_;
         s.spp = spp_;
+        s.first_sample = shown_;
+        s.sequence_spp = max_spp_;
     }
     return s;
 }
@@ -39,6 +44,7 @@ void RefinementSchedule::advance() {
         preview_ = false;
         return;
     }
+    shown_ = spp_;
     if (spp_ >= max_spp_)
         done_ = true;
     else

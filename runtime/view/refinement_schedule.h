@@ -1,16 +1,21 @@
 #pragma once
 // Which frame to render next for progressive display: while the camera moves, one preview at
 // reduced resolution; once it stops, full resolution with 1, 2, 4, ... samples per pixel up to
-// a cap. Every frame is a fresh render of spp samples (the Renderer has no sample offset to
-// resume from), so reaching the cap costs at most twice a single render at the cap.
+// a cap. Each full-resolution step renders only the samples the shown image lacks (first_sample
+// on), which the viewer averages into it: the cap is reached for the cost of one render at the
+// cap, where fresh renders of 1, 2, 4, ... samples cost up to twice that.
 #include <cstdint>
 #include <optional>
 
 namespace kdpm {
 
 struct RefinementStep {
-    std::uint32_t width = 0, height = 0, spp = 1;
+    std::uint32_t width = 0, height = 0;
+    std::uint32_t spp = 1;           // samples per pixel shown once this step's frame is in
+    std::uint32_t first_sample = 0;  // samples shown before it: the frame renders first_sample .. spp - 1
+    std::uint32_t sequence_spp = 1;  // the run the samples belong to (the cap; 1 for a preview)
     bool preview = false;
+    std::uint32_t new_samples() const { return spp - first_sample; }
 };
 
 class RefinementSchedule {
@@ -28,7 +33,7 @@ public:
 private:
     std::uint32_t width_, height_, max_spp_, divisor_;
     bool preview_ = false;
-    std::uint32_t spp_ = 1;
+    std::uint32_t spp_ = 1, shown_ = 0;  // this step's total, and the samples shown before it
     bool done_ = false;
 };
 

@@ -21,6 +21,7 @@
 #include "runtime/view/fly_camera.h"
 #include "runtime/view/frame_composer.h"
 #include "runtime/view/gl_window.h"
+#include "runtime/view/refinement_folding.h"
 #include "runtime/view/refinement_schedule.h"
 #include "runtime/view/render_worker.h"
 #include "runtime/view/screenshot_name.h"
@@ -136,6 +137,12 @@ private:
             s.mode = RenderMode::direct;
             s.light_samples = 1;
             job.density_k = options_.k;
+        } else if (s.mode != RenderMode::sppm) {
+            // Only the samples the shown image lacks, folded into it when the frame arrives
+            // (sppm's passes refine state of their own; the density view's frames are fresh).
+            s.first_sample = step.first_sample;
+            s.spp = step.new_samples();
+            s.sequence_spp = step.sequence_spp;
         }
         s.camera = camera_.record();
         s.camera->width = width_;
@@ -176,6 +183,7 @@ private:
         const StageTimes& t = frame.result.times;
         history_.push({static_cast<float>(t.ray_tracing_ms), static_cast<float>(t.photon_gather_ms + frame.density_ms),
                        static_cast<float>(t.shading_ms), static_cast<float>(t.post_ms + t.transfer_ms)});
+        shown_samples_ = fold_refinement(frame, last_ ? &*last_ : nullptr, shown_samples_);
         if (last_) renderer_.recycle(std::move(last_->result));
         last_ = std::move(frame);
         recompose_ = true;
@@ -183,8 +191,11 @@ private:
     }
 
     void render_and_show_blocking(bool refine) {
-        RefinementStep step = schedule_.current().value_or(RefinementStep{width_, height_, schedule_.max_spp(), false});
-        ++generation_;
+        // Past the cap (scripted runs with more frames than steps): one fresh render at the cap.
+        RefinementStep step = schedule_.current().value_or(
+            RefinementStep{width_, height_, schedule_.max_spp(), 0, schedule_.max_spp(), false});
+        // A new view each time, but a refinement's steps are one view: their frames fold together.
+        if (!refine || step.first_sample == 0) ++generation_;
         worker_.submit(job_for(step));
         FinishedFrame done = worker_.wait();
         if (!done.error.empty()) throw std::runtime_error(done.error);
@@ -241,7 +252,7 @@ private:
             const auto& r = last_->result;
             const StageTimes& s = r.times;
             std::snprintf(line, sizeof line, " %dx%d %u spp | trace %.0f gather %.0f shade %.0f post %.0f ms",
-                          r.linear.width, r.linear.height, last_->job.settings.spp, s.ray_tracing_ms,
+                          r.linear.width, r.linear.height, shown_samples_, s.ray_tracing_ms,
                           s.photon_gather_ms + last_->density_ms, s.shading_ms, s.post_ms + s.transfer_ms);
             t << line;
         }
@@ -257,7 +268,7 @@ private:
         char line[160];
         const auto& r = last_->result;
         std::snprintf(line, sizeof line, "%dx%d%s, %u spp", r.linear.width, r.linear.height,
-                      last_->job.preview ? " (moving)" : "", last_->job.settings.spp);
+                      last_->job.preview ? " (moving)" : "", shown_samples_);
         return line;
     }
 
@@ -364,6 +375,7 @@ private:
     PhotonMaps photons_;
     std::uint64_t generation_ = 0, shown_generation_ = 0;
     std::optional<FinishedFrame> last_;
+    std::uint32_t shown_samples_ = 0;  // samples per pixel in last_ (several frames of a refinement, folded)
     Image plain_;
     std::uint32_t max_spp_, light_samples_;
     FrameHistory history_;

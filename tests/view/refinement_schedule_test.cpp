@@ -15,21 +15,28 @@ TEST_CASE("refinement schedule goes from a preview to full resolution with doubl
     CHECK(step->width == 128);
     CHECK(step->height == 64);
     CHECK(step->spp == 1);
+    CHECK(step->first_sample == 0);
+    CHECK(step->sequence_spp == 1);  // a preview is a run of its own: not jittered
     s.advance();
-    std::vector<std::uint32_t> spp;
+    std::vector<std::uint32_t> spp, first;
     while (auto st = s.current()) {
         CHECK_FALSE(st->preview);
         CHECK(st->width == 512);
         CHECK(st->height == 256);
+        CHECK(st->sequence_spp == 6);
         spp.push_back(st->spp);
+        first.push_back(st->first_sample);
         s.advance();
     }
     CHECK(spp == std::vector<std::uint32_t>{1, 2, 4, 6});
+    // Each step renders only the samples the shown image lacks: six in all, not 13.
+    CHECK(first == std::vector<std::uint32_t>{0, 1, 2, 4});
     // A change starts over; without a preview it begins at full resolution.
     s.restart(false);
     REQUIRE(s.current());
     CHECK_FALSE(s.current()->preview);
     CHECK(s.current()->spp == 1);
+    CHECK(s.current()->first_sample == 0);
 }
 
 TEST_CASE("refinement schedule keeps tiny previews at least one pixel", "[view][schedule]") {

@@ -5,22 +5,13 @@
 
 #include "runtime/render/renderer.h"
 #include "runtime/view/render_worker.h"
-#include "tests/runtime/hand_built_scene.h"
+#include "tests/view/lit_floor_scene.h"
 
 using namespace kdpm;
 
 namespace {
 
-// A lit floor seen from above.
-test::HandBuiltScene floor_scene() {
-    test::HandBuiltScene s;
-    const auto white = s.add_material(glm::vec3(0.8f));
-    s.add_quad(glm::vec3(-1, 0, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), white);
-    s.add_parallelogram_light(glm::vec3(-0.2f, 2, -0.2f), glm::vec3(0.4f, 0, 0), glm::vec3(0, 0, 0.4f),
-                              glm::vec3(5.0f));
-    s.set_camera(glm::vec3(0, 3, 0.01f), glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), 60.0f, 32, 32);
-    return s;
-}
+test::HandBuiltScene floor_scene() { return test::lit_floor(3.0f, 32); }
 
 FrameJob job(std::uint64_t generation, std::uint32_t size, std::uint32_t spp) {
     FrameJob j;

@@ -123,6 +123,23 @@ TEST_CASE("kdpm-view screenshot of the Cornell box matches kdpm-render", "[view]
         CHECK(mean_abs_difference(view, ref) < 0.004);
         fs::remove(screenshot);
     }
+    // Refinement to 4 samples: frames of 1, 1 and 2 new samples folded into the shown image give
+    // kdpm-render's 4-sample image; a fourth frame, past the cap, renders all 4 afresh.
+    for (const std::string frames : {"3", "4"}) {
+        INFO("frames " << frames);
+        r = test::run_tool("kdpm-render " + kdg + " " + kdp + common + " --mode photons --spp 4 -o " + reference.string() +
+                           " --quiet");
+        REQUIRE(r.exit_code == 0);
+        r = test::run_shell(kViewerEnv + "xvfb-run -a " + test::tool_path("kdpm-view") + " " + kdg + " " + kdp + common +
+                            " --mode photons --frames " + frames + " --spp 4 --screenshot " + screenshot.string() +
+                            " --quiet");
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const Pixels view = read_rgb(screenshot), ref = read_rgb(reference);
+        REQUIRE(ref.width == view.width);
+        CHECK(mean_abs_difference(view, ref) < 0.004);
+        fs::remove(screenshot);
+    }
 }
 
 TEST_CASE("kdpm-view --panel shows the control panel over the image, and only there", "[view][e2e][panel]") {

@@ -66,6 +66,12 @@ TEST_CASE("kdpm-bench shows CUDA's frames and shot beside the CPU's only where a
     const std::string cpu_only = format_report({r}, true);
     CHECK_THAT(cpu_only, !Catch::Contains("CUDA"));
     CHECK_THAT(cpu_only, Catch::Contains("| photons | k=32 | 130.0 | 7.69 |  |"));
+    CHECK_THAT(cpu_only, !Catch::Contains("viewer refinement"));  // not measured
+    m.refinement_resumed_ms = 1000.0;
+    m.refinement_fresh_ms = 1900.0;
+    CHECK_THAT(format_report({r}, true),
+               Catch::Contains("- viewer refinement to 8 spp once the camera stops (photons, k=32), 2 threads: 1000 ms "
+                               "with each step resumed and folded in, 1900 ms with a fresh render per step (0.53x)"));
 
     r.shoot_cuda_ms = 12.5;
     m.rows[0].cuda_frame_ms = 4.0;

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <exception>
+#include <optional>
 
 #include "runtime/backend/thread_limit.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/stage_times.h"
 #include "runtime/view/frame_composer.h"
+#include "runtime/view/refinement_folding.h"
+#include "runtime/view/refinement_schedule.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/text_table.h"
 
@@ -56,6 +59,37 @@ double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t he
     };
     frame();  // warm-up
     return median_ms(frames, frame);
+}
+
+// kdpm-view's steps from 1 sample per pixel to the cap once the camera stops (photons, k = 32),
+// each frame rendering the step's new samples folded into the last (resume), or all of the
+// step's samples afresh.
+double viewer_refinement_ms(Renderer& renderer, std::uint32_t width, std::uint32_t height, bool resume) {
+    RefinementSchedule schedule(width, height, kRefinementCap, 1);
+    schedule.restart(false);
+    std::optional<FinishedFrame> shown;
+    std::uint32_t samples = 0;
+    StopWatch watch;
+    while (auto step = schedule.current()) {
+        FinishedFrame f;
+        RenderSettings& s = f.job.settings;
+        s.width = width;
+        s.height = height;
+        s.mode = RenderMode::photons;
+        s.k = 32;
+        s.aovs = aovs_for_view(ViewKind::shaded);
+        s.spp = resume ? step->new_samples() : step->spp;
+        s.first_sample = resume ? step->first_sample : 0;
+        s.sequence_spp = resume ? step->sequence_spp : 0;
+        f.result = renderer.render(s);
+        samples = fold_refinement(f, shown ? &*shown : nullptr, samples);
+        if (shown) renderer.recycle(std::move(shown->result));
+        shown = std::move(f);
+        schedule.advance();
+    }
+    const double ms = watch.lap_ms();
+    if (shown) renderer.recycle(std::move(shown->result));
+    return samples == kRefinementCap ? ms : 0.0;
 }
 
 }  // namespace
@@ -139,6 +173,16 @@ ModeFrames measure_mode_frames(const SceneViews& scene, const ModeFrameConfig& c
         ThreadLimit limit(out.viewer_threads);
         Renderer renderer(scene, BackendKind::cpu);
         out.viewer_frame_ms = viewer_frame_ms(renderer, c.width, c.height, c.frames);
+        if (c.say) c.say("viewer refinement to " + std::to_string(kRefinementCap) + " spp, resumed and fresh");
+        double resumed = 0.0, fresh = 0.0;
+        for (int round = 0; round < 2; ++round) {
+            const double r = viewer_refinement_ms(renderer, c.width, c.height, true);
+            const double f = viewer_refinement_ms(renderer, c.width, c.height, false);
+            resumed = round == 0 ? r : std::min(resumed, r);
+            fresh = round == 0 ? f : std::min(fresh, f);
+        }
+        out.refinement_resumed_ms = resumed;
+        out.refinement_fresh_ms = fresh;
     }
     return out;
 }
@@ -173,6 +217,11 @@ std::string format_mode_frames(const std::string& scene, const ModeFrames& f, bo
                    md ? "\n" : "", f.viewer_threads, f.viewer_frame_ms, fps);
         out += target ? fmt(" (target >= 8 frames/s): %s\n", fps >= 8.0 ? "met" : "MISSED") : "\n";
     }
+    if (f.refinement_resumed_ms > 0 && f.refinement_fresh_ms > 0)
+        out += fmt("%s- viewer refinement to %u spp once the camera stops (photons, k=32), %d threads: %.0f ms with "
+                   "each step resumed and folded in, %.0f ms with a fresh render per step (%.2fx)\n",
+                   md ? "\n" : "", kRefinementCap, f.viewer_threads, f.refinement_resumed_ms, f.refinement_fresh_ms,
+                   f.refinement_resumed_ms / f.refinement_fresh_ms);
     if (!f.cuda_note.empty()) out += fmt("%s- %s\n", md ? "\n" : "", f.cuda_note.c_str());
     if (f.viewer_cuda_frame_ms > 0)
         out += fmt("%s- viewer frame, rendered on CUDA (composed on the CPU): %.1f ms, %.1f frames/s\n", md ? "\n" : "",

@@ -27,8 +27,14 @@ struct ModeFrames {
     int viewer_threads = 0;      // two, or fewer on a smaller machine
     double viewer_frame_ms = 0;  // median: render + compose + 8-bit conversion
     double viewer_cuda_frame_ms = 0;  // the same frame rendered on CUDA; 0 when not measured
+    // kdpm-view's refinement once the camera stops, to kRefinementCap samples per pixel: each step
+    // resumed where the last stopped and folded in (as kdpm-view does), and each step a fresh
+    // render (as before); one of each, alternating, best of two.
+    double refinement_resumed_ms = 0, refinement_fresh_ms = 0;
     std::string cuda_note;            // why the CUDA column stopped short; empty when it did not
 };
+
+inline constexpr std::uint32_t kRefinementCap = 8;
 
 struct ModeFrameConfig {
     std::uint32_t width = 512, height = 512;

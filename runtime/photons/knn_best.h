@@ -116,10 +116,7 @@ public:
         d2_[count_] = d2;
         index_[count_] = p;
         if (++count_ < k_) return false;
-        for (std::uint32_t i = k_; i < blocks_ * KnnHeap::kBlock; ++i) d2_[i] = kNoDistance;
-        for (std::uint32_t b = 0; b < blocks_; ++b) block_max_[b] = max_of(d2_ + b * KnnHeap::kBlock, KnnHeap::kBlock);
-        for (std::uint32_t b = blocks_; b < block_groups_; ++b) block_max_[b] = kNoDistance;
-        find_farthest();
+        become_full();
         return true;
     }
 
@@ -170,6 +167,20 @@ public:
     }
 
 private:
+    // Once a search, when the k-th photon is kept: the padding and the block maxima. Out of line
+    // on the CPU: inlined, the compiler set up this loop's bounds and pointers again before every
+    // 16-photon chunk that had a photon to keep, about 70 instructions each time (photon gather,
+    // Sponza, k = 32: 0.92x the time out of line, the same photons and images bit for bit).
+#if !defined(__CUDA_ARCH__) && (defined(__GNUC__) || defined(__clang__))
+    __attribute__((noinline, cold))
+#endif
+    KDPM_HD void become_full() {
+        for (std::uint32_t i = k_; i < blocks_ * KnnHeap::kBlock; ++i) d2_[i] = kNoDistance;
+        for (std::uint32_t b = 0; b < blocks_; ++b) block_max_[b] = max_of(d2_ + b * KnnHeap::kBlock, KnnHeap::kBlock);
+        for (std::uint32_t b = blocks_; b < block_groups_; ++b) block_max_[b] = kNoDistance;
+        find_farthest();
+    }
+
     KDPM_HD KDPM_INLINE void find_farthest() {
         farthest_ = max_of(block_max_, block_groups_);
         const std::uint32_t b = first_equal(block_max_, block_groups_, farthest_);

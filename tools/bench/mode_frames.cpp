@@ -35,10 +35,10 @@ double median_frame_ms(Renderer& renderer, const RenderSettings& settings, int f
     return median_of(times);
 }
 
-// kdpm-view's full-resolution frame once the camera stops (its first refinement step): one
-// sample per pixel with the AOVs the shaded view needs (aovs_for_view: none), then that view
-// composed and converted to the 8-bit pixels the window uploads.
-double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t height, int frames) {
+// The case both viewer rows measure: kdpm-view's shaded view in the report's method (photons,
+// k = 32) at full resolution, one sample per pixel, with the AOVs that view needs
+// (aovs_for_view: none).
+RenderSettings viewer_settings(std::uint32_t width, std::uint32_t height) {
     RenderSettings s;
     s.width = width;
     s.height = height;
@@ -47,6 +47,13 @@ double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t he
     s.mode = RenderMode::photons;
     s.k = 32;
     s.aovs = aovs_for_view(ViewKind::shaded);
+    return s;
+}
+
+// kdpm-view's full-resolution frame once the camera stops (its first refinement step), then that
+// view composed and converted to the 8-bit pixels the window uploads.
+double viewer_frame_ms(Renderer& renderer, std::uint32_t width, std::uint32_t height, int frames) {
+    const RenderSettings s = viewer_settings(width, height);
     ViewOptions view;
     view.mode = RenderMode::photons;
     view.k = 32;
@@ -73,11 +80,7 @@ double viewer_refinement_ms(Renderer& renderer, std::uint32_t width, std::uint32
     while (auto step = schedule.current()) {
         FinishedFrame f;
         RenderSettings& s = f.job.settings;
-        s.width = width;
-        s.height = height;
-        s.mode = RenderMode::photons;
-        s.k = 32;
-        s.aovs = aovs_for_view(ViewKind::shaded);
+        s = viewer_settings(width, height);
         s.spp = resume ? step->new_samples() : step->spp;
         s.first_sample = resume ? step->first_sample : 0;
         s.sequence_spp = resume ? step->sequence_spp : 0;

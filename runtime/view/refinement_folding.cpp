@@ -7,6 +7,12 @@
 
 namespace kdpm {
 
+void render_new_samples(const RefinementStep& step, RenderSettings& s) {
+    s.first_sample = step.first_sample;
+    s.spp = step.new_samples();
+    s.sequence_spp = step.sequence_spp;
+}
+
 void fold_samples(const Image& before, std::uint32_t samples_before, Image& frame, std::uint32_t added) {
     if (before.width != frame.width || before.height != frame.height || before.rgb.size() != frame.rgb.size())
         throw std::invalid_argument("cannot fold samples into an image of another size");

@@ -5,9 +5,15 @@
 #include <cstdint>
 
 #include "runtime/render/image.h"
+#include "runtime/render/render_settings.h"
+#include "runtime/view/refinement_schedule.h"
 #include "runtime/view/render_worker.h"
 
 namespace kdpm {
+
+// Sets s to render only the samples of a full-resolution step that the shown image lacks
+// (step.first_sample .. step.spp - 1 of a run of step.sequence_spp), for fold_refinement to fold in.
+void render_new_samples(const RefinementStep& step, RenderSettings& s);
 
 // frame := the average of `before` (samples_before samples per pixel) and `frame` (added per
 // pixel), each weighted by its samples. Throws std::invalid_argument when the sizes differ.

@@ -140,9 +140,7 @@ private:
         } else if (s.mode != RenderMode::sppm) {
             // Only the samples the shown image lacks, folded into it when the frame arrives
             // (sppm's passes refine state of their own; the density view's frames are fresh).
-            s.first_sample = step.first_sample;
-            s.spp = step.new_samples();
-            s.sequence_spp = step.sequence_spp;
+            render_new_samples(step, s);
         }
         s.camera = camera_.record();
         s.camera->width = width_;

@@ -81,9 +81,10 @@ double viewer_refinement_ms(Renderer& renderer, std::uint32_t width, std::uint32
         FinishedFrame f;
         RenderSettings& s = f.job.settings;
         s = viewer_settings(width, height);
-        s.spp = resume ? step->new_samples() : step->spp;
-        s.first_sample = resume ? step->first_sample : 0;
-        s.sequence_spp = resume ? step->sequence_spp : 0;
+        if (resume)
+            render_new_samples(*step, s);  // as kdpm-view renders the step
+        else
+            s.spp = step->spp;
         f.result = renderer.render(s);
         samples = fold_refinement(f, shown ? &*shown : nullptr, samples);
         if (shown) renderer.recycle(std::move(shown->result));

@@ -98,6 +98,9 @@ void ContainerReader::parse(std::optional<FileKind> expected) {
         if (e.offset < data_begin || e.offset > table_off || e.byte_size > table_off - e.offset)
             fail(label + " lies outside the data area");
     }
+    for (std::size_t i = 0; i < sections_.size(); ++i)
+        for (std::size_t j = i + 1; j < sections_.size(); ++j)
+            if (sections_[i].id == sections_[j].id) fail("section " + section_label(sections_[i].id) + " appears twice");
     std::vector<const SectionEntry*> order;
     for (const auto& e : sections_) order.push_back(&e);
     // Empty sections may share an offset with the next one: order them first so they overlap nothing.
@@ -105,13 +108,9 @@ void ContainerReader::parse(std::optional<FileKind> expected) {
         return a->offset != b->offset ? a->offset < b->offset : a->byte_size < b->byte_size;
     });
     for (std::size_t i = 1; i < order.size(); ++i) {
-        if (order[i]->id == order[i - 1]->id) fail("section " + section_label(order[i]->id) + " appears twice");
         if (order[i - 1]->offset + order[i - 1]->byte_size > order[i]->offset)
             fail("sections " + section_label(order[i - 1]->id) + " and " + section_label(order[i]->id) + " overlap");
     }
-    for (std::size_t i = 0; i < sections_.size(); ++i)
-        for (std::size_t j = i + 1; j < sections_.size(); ++j)
-            if (sections_[i].id == sections_[j].id) fail("section " + section_label(sections_[i].id) + " appears twice");
 }
 
 const SectionEntry* ContainerReader::find(std::uint32_t id) const {

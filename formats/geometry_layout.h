@@ -59,6 +59,9 @@ struct MaterialRecord {
 };
 static_assert(sizeof(MaterialRecord) == 64);
 
+// The index of refraction of glass that names none (an ior of 0 in a file, or 1 in an MTL).
+inline constexpr float kDefaultGlassIor = 1.5f;
+
 // Per-vertex texture coordinates of a triangle (same order as geometry.triangles; optional).
 struct TriangleUVs {
     float uv[3][2];  // (u, v) at v0, v1, v2; v = 0 is the image's bottom row

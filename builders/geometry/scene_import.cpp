@@ -85,7 +85,7 @@ MaterialRecord convert_material(const aiMaterial& m) {
         if (has_tf && !is_black(tf)) set3(r.transmission, tf);
         else if (transmission > 0.0f) set3(r.transmission, aiColor3D(transmission, transmission, transmission));
         else set3(r.transmission, aiColor3D(1, 1, 1));
-        if (r.ior == 1.0f) r.ior = 1.5f;
+        if (r.ior == 1.0f) r.ior = kDefaultGlassIor;
     } else if (mirror) {
         r.kind = static_cast<std::uint32_t>(MaterialKind::mirror);
         if (is_black(ks)) set3(r.specular, aiColor3D(1, 1, 1));

@@ -1,10 +1,10 @@
-// Texture files (PNG, JPEG, TGA, EXR, PPM, ...) through the OpenImageIO module (runtime/oiio),
+// Texture files (PNG, JPEG, TGA, EXR, PPM, ...) through the OpenImageIO module (formats/oiio),
 // loaded on the first texture only: a scene without textures never loads it.
 #include <cmath>
 #include <exception>
 
 #include "builders/geometry/texture_import.h"
-#include "runtime/oiio/oiio_plugin_loader.h"
+#include "formats/oiio/oiio_plugin_loader.h"
 
 namespace kdpm {
 

@@ -59,11 +59,6 @@ public:
         cuda_parallel_for(n, pass);
     }
 
-    std::size_t pool_bytes() const {
-        std::size_t total = 0;
-        for (const DeviceBuffer& b : pool_) total += b.size();
-        return total;
-    }
     std::size_t allocations() const { return allocations_; }  // cudaMalloc calls so far
 
 private:

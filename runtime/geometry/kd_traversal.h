@@ -19,9 +19,6 @@ namespace kdpm {
 
 namespace kd_detail {
 
-KDPM_HD KDPM_INLINE float min_f(float a, float b) { return a < b ? a : b; }
-KDPM_HD KDPM_INLINE float max_f(float a, float b) { return a > b ? a : b; }
-
 // Clips [t0, t1] to the slab intersection of the scene bounds. NaN slab values (origin on a
 // slab plane with a zero direction component) leave the interval unchanged.
 KDPM_HD KDPM_INLINE bool clip_to_bounds(const GeometryInfo& info, const glm::vec3& origin,

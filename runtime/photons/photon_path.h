@@ -128,17 +128,14 @@ KDPM_HD inline bool continue_photon_path(const GeometryView& g, const ShootSetti
         if (bounce >= s.max_bounces || !russian_roulette(st.power, to_vec3(m.specular), u_rr)) return false;
         direction = glm::normalize(reflect_dir(direction, n));
     } else if (kind == MaterialKind::glass) {
-        const float ior = m.ior > 0.0f ? m.ior : 1.5f;
-        const float eta = front ? 1.0f / ior : ior;
-        const float cos_i = -glm::dot(direction, n);
-        float cos_t;
-        const float fresnel = dielectric_fresnel(cos_i, eta, cos_t);
+        glm::vec3 refracted(0.0f);
+        const float fresnel = glass_fresnel(m, direction, n, front, refracted);
         if (bounce >= s.max_bounces) return false;
         if (rnd(stream, 3) < fresnel) {
             direction = glm::normalize(reflect_dir(direction, n));
         } else {
             if (!russian_roulette(st.power, to_vec3(m.transmission), u_rr)) return false;
-            direction = refract_dir(direction, n, eta, cos_i, cos_t);
+            direction = refracted;
         }
     } else {
         PhotonHit& h = *stored;

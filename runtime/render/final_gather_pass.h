@@ -36,7 +36,6 @@
 namespace kdpm {
 
 struct FinalGatherPass {
-    static constexpr std::uint32_t kSeed = 0x67617468u;  // its own stream, apart from paths and photons
 
     GeometryView geometry;
     FrameBuffersView frame;
@@ -75,7 +74,7 @@ struct FinalGatherPass {
 
     // The radiance arriving at the vertex along one gather ray.
     KDPM_HD glm::vec3 gather(const DiffuseVertex& v, std::uint64_t path, std::uint32_t ray_index, KnnHeap& heap) const {
-        auto random = [&](std::uint32_t dimension) { return counter_random(kSeed, path, ray_index, dimension); };
+        const RandomStream random{random_seed::gather, path, ray_index};
         // About the geometric normal, as the photon shooter bounces (diffuse.h says why).
         glm::vec3 direction = cosine_direction(v.geometric_normal, random(0), random(1));
         if (glm::dot(direction, v.geometric_normal) <= 0.0f) return glm::vec3(0.0f);  // grazing
@@ -87,7 +86,7 @@ struct FinalGatherPass {
     // surface that way (infinity on a miss; irradiance caching's record radius).
     KDPM_HD glm::vec3 follow(const DiffuseVertex& v, glm::vec3 direction, std::uint64_t path, std::uint32_t ray_index,
                              KnnHeap& heap, float& distance) const {
-        auto random = [&](std::uint32_t dimension) { return counter_random(kSeed, path, ray_index, dimension); };
+        const RandomStream random{random_seed::gather, path, ray_index};
         distance = std::numeric_limits<float>::infinity();
         glm::vec3 origin = offset_origin(v.position, v.geometric_normal, epsilon, true);
         glm::vec3 throughput(1.0f);
@@ -98,23 +97,12 @@ struct FinalGatherPass {
             if (depth == 0) distance = hit.t;
             const SurfacePoint s = surface_at(geometry, ray, hit);
             const MaterialRecord m = material_of(geometry, hit);
-            if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
-                throughput *= to_vec3(m.specular);
-                direction = reflect_dir(direction, s.shading_normal);
-                origin = offset_origin(s.position, s.geometric_normal, epsilon, true);
-            } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
-                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
-                glm::vec3 refracted(0.0f);
-                const float f = fresnel_refract(direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
-                // Reflect with probability f, else refract: the Fresnel weights cancel.
-                if (random(2 + depth) < f) {
-                    direction = reflect_dir(direction, s.shading_normal);
-                    origin = offset_origin(s.position, s.geometric_normal, epsilon, true);
-                } else {
-                    throughput *= to_vec3(m.transmission);
-                    direction = refracted;
-                    origin = offset_origin(s.position, s.geometric_normal, epsilon, false);
-                }
+            if (is_specular(m)) {
+                const SpecularScatter out =
+                    scatter_specular(m, direction, s.shading_normal, s.front, [&] { return random(2 + depth); });
+                throughput *= out.weight;
+                direction = out.direction;
+                origin = offset_origin(s.position, s.geometric_normal, epsilon, !out.transmitted);
             } else {
                 return throughput * diffuse_radiance(s, to_vec3(m.diffuse), heap);
             }

@@ -2,7 +2,7 @@
 // Encodes interleaved float pixels into one image file, the format chosen by the destination's
 // extension, through the output discipline (formats/output_file.h): the bytes go into a private
 // temporary that the caller publishes. kdpm writes 8-bit .png and float .pfm itself
-// (encode_builtin_image); every other format goes through the OpenImageIO module (runtime/oiio),
+// (encode_builtin_image); every other format goes through the OpenImageIO module (formats/oiio),
 // loaded on first use, in builds that have it (KDPM_WITH_OPENIMAGEIO, the default). The GPU
 // bundle is built without it, as OpenImageIO loads ~250 shared libraries.
 #include <cstdint>

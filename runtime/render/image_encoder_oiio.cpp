@@ -1,8 +1,8 @@
 // encode_image in builds with OpenImageIO: .png and .pfm by kdpm's own encoders, every other
-// format through the OpenImageIO module (runtime/oiio), loaded on the first such image only.
+// format through the OpenImageIO module (formats/oiio), loaded on the first such image only.
 #include <stdexcept>
 
-#include "runtime/oiio/oiio_plugin_loader.h"
+#include "formats/oiio/oiio_plugin_loader.h"
 #include "runtime/render/image_encoder.h"
 
 namespace kdpm {

@@ -65,8 +65,8 @@ struct IrradianceRecordPass {
             float first_d = 0.0f, left_d = 0.0f;
             for (std::uint32_t k = 0; k < columns; ++k) {
                 const std::uint32_t ray = (vertex << 16) | (j * columns + k);
-                const float u1 = counter_random(FinalGatherPass::kSeed, path, ray, 0);
-                const float u2 = counter_random(FinalGatherPass::kSeed, path, ray, 1);
+                const float u1 = counter_random(random_seed::gather, path, ray, 0);
+                const float u2 = counter_random(random_seed::gather, path, ray, 1);
                 const float sin2 = (static_cast<float>(j) + u1) / m;
                 const float sin_t = sqrtf(sin2), cos_t = sqrtf(1.0f - sin2 > 1e-8f ? 1.0f - sin2 : 1e-8f);
                 const float phi = 2.0f * kPi * (static_cast<float>(k) + u2) / n;

@@ -30,17 +30,10 @@
 
 namespace kdpm {
 
-// Random numbers of a camera path: counter_random keyed by (pixel, sample) as the 64-bit path
+// Random numbers of a camera path: a RandomStream keyed by (pixel, sample) as the 64-bit path
 // index and the vertex as the bounce, so every value is a pure function of
 // (pixel, sample, bounce, dimension). Dimensions per vertex: 0..2 the shadow ray, 3 roulette,
 // 4..5 the diffuse direction, 6 the Fresnel choice.
-struct PathRandom {
-    static constexpr std::uint32_t kSeed = 0x70617468u;  // its own stream, apart from photon paths
-    std::uint64_t path;
-    std::uint32_t vertex;
-    KDPM_HD float operator()(std::uint32_t dimension) const { return counter_random(kSeed, path, vertex, dimension); }
-};
-
 struct PathPass {
     // A hard end for paths roulette would not stop (an albedo-1 room has no way out); reached
     // with probability rho^1024 otherwise.
@@ -77,31 +70,17 @@ struct PathPass {
             const float footprint = vertex == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
             const MaterialRecord m = material_of(geometry, hit, footprint);
             if (count_emission && s.front) radiance += throughput * to_vec3(m.emission);
-            const PathRandom random{path, vertex};
+            const RandomStream random{random_seed::path, path, vertex};
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);
 
-            if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
+            if (is_specular(m)) {
                 if (run_depth + 1 >= max_depth) break;
                 ++run_depth;
-                throughput *= to_vec3(m.specular);
-                direction = reflect_dir(direction, s.shading_normal);
-                origin = above;
-                count_emission = true;
-            } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
-                if (run_depth + 1 >= max_depth) break;
-                ++run_depth;
-                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
-                glm::vec3 refracted(0.0f);
-                const float f = fresnel_refract(direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
-                // Reflect with probability f, else refract: the Fresnel weights cancel.
-                if (random(6) < f) {
-                    direction = reflect_dir(direction, s.shading_normal);
-                    origin = above;
-                } else {
-                    throughput *= to_vec3(m.transmission);
-                    direction = refracted;
-                    origin = offset_origin(s.position, s.geometric_normal, epsilon, false);
-                }
+                const SpecularScatter out =
+                    scatter_specular(m, direction, s.shading_normal, s.front, [&] { return random(6); });
+                throughput *= out.weight;
+                direction = out.direction;
+                origin = out.transmitted ? offset_origin(s.position, s.geometric_normal, epsilon, false) : above;
                 count_emission = true;
             } else {
                 const glm::vec3 albedo = to_vec3(m.diffuse);

@@ -53,15 +53,8 @@ struct SppmVisiblePoint {
     glm::vec3 weight{0.0f};  // specular throughput times the Lambertian BRDF
 };
 
-// Random numbers of a pixel's camera path in one pass: keyed by (pixel, pass) as the path index.
-// Stream 2v: the Fresnel choice at vertex v; stream 2v + 1: the shadow rays.
-struct SppmRandom {
-    static constexpr std::uint32_t kSeed = 0x7370706du;  // its own stream, apart from photons and path
-    std::uint64_t path;
-    std::uint32_t stream;
-    KDPM_HD float operator()(std::uint32_t dimension) const { return counter_random(kSeed, path, stream, dimension); }
-};
-
+// Random numbers of a pixel's camera path in one pass: a RandomStream keyed by (pixel, pass) as
+// the path index. Counter 2v: the Fresnel choice at vertex v; counter 2v + 1: the shadow rays.
 struct SppmVisiblePass {
     GeometryView geometry;
     LightSelection lights;
@@ -95,26 +88,16 @@ struct SppmVisiblePass {
             const MaterialRecord m = material_of(geometry, hit, footprint);
             if (s.front) radiance += throughput * to_vec3(m.emission);
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);
-            if (m.kind == static_cast<std::uint32_t>(MaterialKind::mirror)) {
-                throughput *= to_vec3(m.specular);
-                direction = reflect_dir(direction, s.shading_normal);
-                origin = above;
-            } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
-                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
-                glm::vec3 refracted(0.0f);
-                const float f = fresnel_refract(direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
-                if (SppmRandom{path, 2 * vertex}(0) < f) {
-                    direction = reflect_dir(direction, s.shading_normal);
-                    origin = above;
-                } else {
-                    throughput *= to_vec3(m.transmission);
-                    direction = refracted;
-                    origin = offset_origin(s.position, s.geometric_normal, epsilon, false);
-                }
+            if (is_specular(m)) {
+                const SpecularScatter out = scatter_specular(m, direction, s.shading_normal, s.front,
+                                                             [&] { return RandomStream{random_seed::sppm, path, 2 * vertex}(0); });
+                throughput *= out.weight;
+                direction = out.direction;
+                origin = out.transmitted ? offset_origin(s.position, s.geometric_normal, epsilon, false) : above;
             } else {
                 const glm::vec3 albedo = to_vec3(m.diffuse);
                 radiance += throughput * direct_light_with(geometry, lights, above, s.shading_normal, albedo,
-                                                           light_samples, SppmRandom{path, 2 * vertex + 1});
+                                                           light_samples, RandomStream{random_seed::sppm, path, 2 * vertex + 1});
                 point.found = 1;
                 point.position = s.position;
                 point.normal = s.geometric_normal;

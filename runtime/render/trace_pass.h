@@ -97,9 +97,8 @@ struct TracePass {
                     stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal),
                                           r.throughput * to_vec3(m.specular), r.depth + 1};
             } else if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass)) {
-                const float ior = m.ior > 0.0f ? m.ior : 1.5f;
                 glm::vec3 refracted(0.0f);
-                const float f = fresnel_refract(r.direction, s.shading_normal, s.front ? 1.0f / ior : ior, refracted);
+                const float f = glass_fresnel(m, r.direction, s.shading_normal, s.front, refracted);
                 if (deeper && sp < kStack && f > 0.0f)
                     stack[sp++] = Pending{above, reflect_dir(r.direction, s.shading_normal), r.throughput * f,
                                           r.depth + 1};

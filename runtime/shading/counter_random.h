@@ -41,4 +41,21 @@ KDPM_HD KDPM_INLINE float random01(std::uint32_t a, std::uint32_t b, std::uint32
     return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
 }
 
+// The seeds that keep each render mode's camera-side numbers apart from the others and from the
+// photon paths (changing one changes every image of its mode).
+namespace random_seed {
+inline constexpr std::uint32_t path = 0x70617468u;    // --mode path
+inline constexpr std::uint32_t sppm = 0x7370706du;    // --mode sppm
+inline constexpr std::uint32_t gather = 0x67617468u;  // final-gather rays and irradiance-cache records
+}  // namespace random_seed
+
+// One stream of counter_random, handed to samplers that read it by dimension: a mode's seed, a
+// 64-bit path index and a counter within the path (a vertex, a ray).
+struct RandomStream {
+    std::uint32_t seed;
+    std::uint64_t path;
+    std::uint32_t counter;
+    KDPM_HD float operator()(std::uint32_t dimension) const { return counter_random(seed, path, counter, dimension); }
+};
+
 }  // namespace kdpm

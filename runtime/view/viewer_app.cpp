@@ -185,7 +185,6 @@ private:
         if (last_) renderer_.recycle(std::move(last_->result));
         last_ = std::move(frame);
         recompose_ = true;
-        ++frames_shown_;
     }
 
     void render_and_show_blocking(bool refine) {
@@ -380,7 +379,6 @@ private:
     PanelActions pending_;
     std::vector<unsigned char> bytes_;
     bool recompose_ = false;
-    int frames_shown_ = 0;
 };
 
 }  // namespace

@@ -7,7 +7,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "runtime/oiio/oiio_plugin_loader.h"
+#include "formats/oiio/oiio_plugin_loader.h"
 #include "runtime/render/image_encoder.h"
 #include "runtime/render/image_output.h"
 #include "tests/support/run_command.h"

@@ -1,4 +1,4 @@
-// OpenImageIO is a module (runtime/oiio) that the tools load only for image formats kdpm does not
+// OpenImageIO is a module (formats/oiio) that the tools load only for image formats kdpm does not
 // handle itself: no tool links it (its ~250 libraries took half a second at every start), a .png
 // needs no module, and a format that needs it fails in one line when it cannot be loaded.
 #include <catch2/catch.hpp>

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "runtime/oiio/oiio_plugin_api.h"
+#include "formats/oiio/oiio_plugin_api.h"
 
 namespace {
 

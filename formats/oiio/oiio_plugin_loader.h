@@ -3,7 +3,7 @@
 // $KDPM_OIIO_PLUGIN (a file) when set, else lib/kdpm/ beside the executable's bin/ (the build
 // tree and an installed prefix alike), else the install prefix kdpm was configured with (a
 // program built against the installed package).
-#include "runtime/oiio/oiio_plugin_api.h"
+#include "formats/oiio/oiio_plugin_api.h"
 
 namespace kdpm {
 

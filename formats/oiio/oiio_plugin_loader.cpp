@@ -1,4 +1,4 @@
-#include "runtime/oiio/oiio_plugin_loader.h"
+#include "formats/oiio/oiio_plugin_loader.h"
 
 #include <dlfcn.h>
 

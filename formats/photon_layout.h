@@ -6,6 +6,7 @@
 // KDPM_HD so builder, CPU and GPU decode the same bits.
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "formats/host_device.h"
 #include "formats/kd_node.h"
@@ -131,13 +132,22 @@ inline std::uint32_t encode_rgbe(float r, float g, float b) {
     };
     return q(r) | (q(g) << 8) | (q(b) << 16) | (static_cast<std::uint32_t>(e + 128) << 24);
 }
+// 2^(e - 136), the scale of a biased exponent e >= 1: built from its bits where it is a normal
+// float (exactly ldexpf's result there), so that hot loops decode without a libm call.
+KDPM_HD KDPM_INLINE float rgbe_scale(std::uint32_t e) {
+    if (e < 10) return ldexpf(1.0f, static_cast<int>(e) - 128 - 8);  // below the normal floats
+    const std::uint32_t bits = (e - 9) << 23;                          // biased exponent (e - 136) + 127
+    float scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return scale;
+}
 KDPM_HD inline void decode_rgbe(std::uint32_t v, float out[3]) {
     std::uint32_t e = v >> 24;
     if (e == 0) {
         out[0] = out[1] = out[2] = 0.0f;
         return;
     }
-    float scale = ldexpf(1.0f, static_cast<int>(e) - 128 - 8);
+    const float scale = rgbe_scale(e);
     out[0] = static_cast<float>(v & 0xffu) * scale;
     out[1] = static_cast<float>((v >> 8) & 0xffu) * scale;
     out[2] = static_cast<float>((v >> 16) & 0xffu) * scale;
@@ -161,23 +171,30 @@ inline std::uint32_t encode_octahedral(float x, float y, float z) {
     };
     return q(u) | (q(v) << 16);
 }
+// The octahedron's point (u, v, 1 - |u| - |v|), its lower half folded back: the decoded vector
+// before normalisation (length in [0.57, 1]).
+KDPM_HD KDPM_INLINE void octahedral_unfold(float u, float v, float out[3]) {
+    const float z = 1.0f - fabsf(u) - fabsf(v);
+    if (z < 0.0f) {
+        const float fu = (1.0f - fabsf(v)) * (u >= 0.0f ? 1.0f : -1.0f);
+        v = (1.0f - fabsf(u)) * (v >= 0.0f ? 1.0f : -1.0f);
+        u = fu;
+    }
+    out[0] = u;
+    out[1] = v;
+    out[2] = z;
+}
 KDPM_HD inline void decode_octahedral(std::uint32_t packed, float out[3]) {
     auto c = [](std::uint32_t bits) {
         float f = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(bits))) / 32767.0f;
         return f < -1.0f ? -1.0f : f;
     };
-    float u = c(packed & 0xffffu), v = c(packed >> 16);
-    float z = 1.0f - fabsf(u) - fabsf(v);
-    if (z < 0.0f) {
-        float fu = (1.0f - fabsf(v)) * (u >= 0.0f ? 1.0f : -1.0f);
-        float fv = (1.0f - fabsf(u)) * (v >= 0.0f ? 1.0f : -1.0f);
-        u = fu;
-        v = fv;
-    }
-    float inv = 1.0f / sqrtf(u * u + v * v + z * z);
-    out[0] = u * inv;
-    out[1] = v * inv;
-    out[2] = z * inv;
+    float w[3];
+    octahedral_unfold(c(packed & 0xffffu), c(packed >> 16), w);
+    float inv = 1.0f / sqrtf(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    out[0] = w[0] * inv;
+    out[1] = w[1] * inv;
+    out[2] = w[2] * inv;
 }
 
 }  // namespace kdpm

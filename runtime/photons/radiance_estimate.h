@@ -84,22 +84,14 @@ struct SurfacePhotonFilter {
         cos2_below = c2 - 1e-3f;
     }
 
-    // The octahedral vector as decode_octahedral folds it, unnormalized (length in [0.57, 1]).
+    // The octahedral vector as decode_octahedral folds it, unnormalized; the snorm16s read by a
+    // reciprocal multiply, not decode's division (within an ulp, and this decides only outside
+    // the margin).
     KDPM_HD static void unfolded(std::uint32_t packed, float out[3]) {
         constexpr float kInv = 1.0f / 32767.0f;
-        float u = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed & 0xffffu))) * kInv;
-        float v = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed >> 16))) * kInv;
-        u = u < -1.0f ? -1.0f : u;
-        v = v < -1.0f ? -1.0f : v;
-        const float z = 1.0f - fabsf(u) - fabsf(v);
-        if (z < 0.0f) {
-            const float fu = (1.0f - fabsf(v)) * (u >= 0.0f ? 1.0f : -1.0f);
-            v = (1.0f - fabsf(u)) * (v >= 0.0f ? 1.0f : -1.0f);
-            u = fu;
-        }
-        out[0] = u;
-        out[1] = v;
-        out[2] = z;
+        const float u = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed & 0xffffu))) * kInv;
+        const float v = static_cast<float>(static_cast<std::int16_t>(static_cast<std::uint16_t>(packed >> 16))) * kInv;
+        octahedral_unfold(u < -1.0f ? -1.0f : u, v < -1.0f ? -1.0f : v, out);
     }
 
     KDPM_HD bool exact(std::uint32_t p) const {
@@ -233,18 +225,11 @@ private:
 #endif
 };
 
-// decode_rgbe's value with the power of two built from its bits where it is a normal float
-// (exactly ldexpf's result there) instead of a libm call per photon.
+// decode_rgbe's value as a vector.
 KDPM_HD KDPM_INLINE glm::vec3 photon_power(std::uint32_t rgbe) {
     const std::uint32_t e = rgbe >> 24;
-    if (e < 10) {  // zero, or a scale 2^(e - 136) below the normal floats
-        float pw[3];
-        decode_rgbe(rgbe, pw);
-        return glm::vec3(pw[0], pw[1], pw[2]);
-    }
-    const std::uint32_t bits = (e - 9) << 23;  // biased exponent (e - 136) + 127
-    float scale;
-    std::memcpy(&scale, &bits, sizeof scale);
+    if (e == 0) return glm::vec3(0.0f);
+    const float scale = rgbe_scale(e);
     return glm::vec3(static_cast<float>(rgbe & 0xffu) * scale, static_cast<float>((rgbe >> 8) & 0xffu) * scale,
                      static_cast<float>((rgbe >> 16) & 0xffu) * scale);
 }

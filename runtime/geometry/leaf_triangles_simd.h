@@ -2,18 +2,20 @@
 // A leaf's triangles against one ray, four at a time (SSE2, CPU only). The single-ray walk's
 // leaf loop tests one triangle after another, and for incoherent rays (photon paths, bounces)
 // each test's early exits are branches the CPU cannot predict; here every lane runs the whole of
-// intersect_triangle's arithmetic, the same float operations in the same order, and only the
-// lanes' verdicts are read. The results are the scalar loop's bit for bit: the closest hit is
-// the lowest t, the first of the leaf's order among equal t (the scalar loop replaces a hit only
-// with a strictly nearer one), with that triangle's u and v.
+// moller_trumbore.h's arithmetic without its early outs, and only the lanes' verdicts are read.
+// The results are the scalar loop's bit for bit: the closest hit is the lowest t, the first of
+// the leaf's order among equal t (the scalar loop replaces a hit only with a strictly nearer
+// one), with that triangle's u and v.
 #include <cstddef>
 #include <cstdint>
 
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/ray.h"
 
-#if defined(__SSE2__) && defined(__x86_64__) && !defined(__CUDA_ARCH__)
-#include <emmintrin.h>
+#include "runtime/geometry/moller_trumbore.h"
+#include "runtime/geometry/sse2_ops.h"
+
+#if defined(KDPM_SSE2_OPS)
 #define KDPM_LEAF_SIMD 1
 #endif
 
@@ -47,32 +49,16 @@ inline void intersect4(const TriangleRecord* const a[4], const Ray& ray, float t
     __m128 e2x = _mm_loadu_ps(r0 + 8), e2y = _mm_loadu_ps(r1 + 8), e2z = _mm_loadu_ps(r2 + 8), e2w = _mm_loadu_ps(r3 + 8);
     _MM_TRANSPOSE4_PS(e2x, e2y, e2z, e2w);
 
-    const __m128 dx = _mm_set1_ps(ray.direction.x), dy = _mm_set1_ps(ray.direction.y), dz = _mm_set1_ps(ray.direction.z);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-    // p = cross(d, e2), det = dot(e1, p): glm's operand order and sum order, as the scalar test.
-    const __m128 px = _mm_sub_ps(_mm_mul_ps(dy, e2z), _mm_mul_ps(dz, e2y));
-    const __m128 py = _mm_sub_ps(_mm_mul_ps(dz, e2x), _mm_mul_ps(dx, e2z));
-    const __m128 pz = _mm_sub_ps(_mm_mul_ps(dx, e2y), _mm_mul_ps(dy, e2x));
-    const __m128 det = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e1x, px), _mm_mul_ps(e1y, py)), _mm_mul_ps(e1z, pz));
-    __m128 ok = _mm_cmpneq_ps(det, zero);  // true for NaN: NaN fails every later test, as in the scalar
-    const __m128 inv_det = _mm_div_ps(one, det);
-    const __m128 sx = _mm_sub_ps(_mm_set1_ps(ray.origin.x), v0x);
-    const __m128 sy = _mm_sub_ps(_mm_set1_ps(ray.origin.y), v0y);
-    const __m128 sz = _mm_sub_ps(_mm_set1_ps(ray.origin.z), v0z);
-    const __m128 uu = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(sx, px), _mm_mul_ps(sy, py)), _mm_mul_ps(sz, pz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(uu, zero), _mm_cmple_ps(uu, one)));
-    // q = cross(s, e1)
-    const __m128 qx = _mm_sub_ps(_mm_mul_ps(sy, e1z), _mm_mul_ps(sz, e1y));
-    const __m128 qy = _mm_sub_ps(_mm_mul_ps(sz, e1x), _mm_mul_ps(sx, e1z));
-    const __m128 qz = _mm_sub_ps(_mm_mul_ps(sx, e1y), _mm_mul_ps(sy, e1x));
-    const __m128 vv = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, qx), _mm_mul_ps(dy, qy)), _mm_mul_ps(dz, qz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpge_ps(vv, zero), _mm_cmple_ps(_mm_add_ps(uu, vv), one)));
-    const __m128 tt = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(e2x, qx), _mm_mul_ps(e2y, qy)), _mm_mul_ps(e2z, qz)), inv_det);
-    ok = _mm_and_ps(ok, _mm_and_ps(_mm_cmpgt_ps(tt, _mm_set1_ps(ray.tmin)), _mm_cmplt_ps(tt, _mm_set1_ps(tmax))));
-    out.hits = _mm_movemask_ps(ok);
-    _mm_store_ps(out.t, tt);
-    _mm_store_ps(out.u, uu);
-    _mm_store_ps(out.v, vv);
+    const __m128 v0[3] = {v0x, v0y, v0z}, e1[3] = {e1x, e1y, e1z}, e2[3] = {e2x, e2y, e2z};
+    const __m128 o[3] = {_mm_set1_ps(ray.origin.x), _mm_set1_ps(ray.origin.y), _mm_set1_ps(ray.origin.z)};
+    const __m128 d[3] = {_mm_set1_ps(ray.direction.x), _mm_set1_ps(ray.direction.y), _mm_set1_ps(ray.direction.z)};
+    const __m128 all = _mm_castsi128_ps(_mm_set1_epi32(-1));
+    const TriangleTest<Sse2Ops> r =
+        moller_trumbore<Sse2Ops, false>(v0, e1, e2, o, d, _mm_set1_ps(ray.tmin), _mm_set1_ps(tmax), all);
+    out.hits = _mm_movemask_ps(r.hit);
+    _mm_store_ps(out.t, r.t);
+    _mm_store_ps(out.u, r.u);
+    _mm_store_ps(out.v, r.v);
 }
 
 // The leaf's triangles in groups of four, in leaf order: on_group(index, lanes) for each, with

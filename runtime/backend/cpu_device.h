@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "runtime/backend/cpu_parallel_for.h"
+#include "runtime/backend/device_concept.h"
 #include "runtime/backend/host_block_cache.h"
 
 namespace kdpm {
@@ -80,5 +81,7 @@ struct CpuDevice {
         cpu_parallel_for(n, pass, 16);
     }
 };
+
+static_assert(BackendDevice<CpuDevice>);
 
 }  // namespace kdpm

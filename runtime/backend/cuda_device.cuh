@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "runtime/backend/cuda_check.h"
+#include "runtime/backend/device_concept.h"
 #include "runtime/backend/cuda_parallel_for.cuh"
 #include "runtime/backend/device_buffer.h"
 
@@ -80,5 +81,7 @@ private:
     std::size_t next_ = 0;
     std::size_t allocations_ = 0;
 };
+
+static_assert(BackendDevice<CudaDevice>);
 
 }  // namespace kdpm

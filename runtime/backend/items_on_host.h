@@ -3,13 +3,15 @@
 // memory (CpuDevice), and through one where they are not (CUDA).
 #include <vector>
 
+#include "runtime/backend/device_concept.h"
+
 namespace kdpm {
 
 // The items of `a` readable on the host: `a` itself on a device whose arrays are host memory,
 // else a copy in `buffer`.
 template <class Device, class Array, class T>
 const T* items_on_host(Device& dev, const Array& a, std::vector<T>& buffer) {
-    if constexpr (requires { requires Device::arrays_on_host; }) {
+    if constexpr (arrays_on_host_v<Device>) {
         return a.data();
     } else {
         dev.to_host(a, buffer);

@@ -87,7 +87,7 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         // Every path writes its result.
         auto results = dev.template scratch<PhotonPathResult>(n);
         const PhotonPathResult* result_items = nullptr;
-        if constexpr (requires { requires Device::arrays_on_host; }) {
+        if constexpr (arrays_on_host_v<Device>) {
             if (order == PathOrder::sorted_waves && n <= shoot_waves_detail::kWaveMaxBatch &&
                 settings.max_bounces <= shoot_waves_detail::kWaveMaxBounces) {
                 shoot_batch_in_waves(dev, geometry, lights, settings, first, n, results.data(), hits, reserve,

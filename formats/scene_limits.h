@@ -11,7 +11,8 @@ namespace kdpm {
 
 inline constexpr std::uint32_t kMaxPhotons = 1u << 30;  // photon paths per shot
 inline constexpr std::uint32_t kMaxBounces = 255;       // bounces per photon path
-inline constexpr std::uint32_t kMaxEstimateK = 256;      // photons per radiance estimate (kMaxGatherK)
+inline constexpr std::uint32_t kMinEstimateK = 1;        // photons per radiance estimate: --k of both tools
+inline constexpr std::uint32_t kMaxEstimateK = 256;      // (kMaxGatherK)
 
 // A photon search radius below this fraction of the scene's diagonal finds no photons at all
 // (the image loses its photon light without a word); 0 stands for "automatic" or "none".

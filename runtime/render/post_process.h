@@ -10,6 +10,9 @@ namespace kdpm {
 enum class ToneMap { none, reinhard, aces };
 ToneMap parse_tone_map(std::string_view text);  // throws std::invalid_argument
 
+// The exposure range of the tools' --exposure and of the viewer's keys, in stops.
+inline constexpr float kMaxExposureStops = 32.0f;
+
 struct PostSettings {
     float exposure_stops = 0.0f;  // radiance is scaled by 2^stops
     ToneMap tone_map = ToneMap::aces;

@@ -18,8 +18,8 @@ public:
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         CpuDevice device;
         device.cache = &kept_;
-        if (plan.gather_photons) unpack_once();
-        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light, plan.settings);
+        if (plan.gather_photons()) unpack_once();
+        const PhotonGatherPass gather = make_gather_pass(scene_.photons, plan.direct_light(), plan.settings);
         run_frame(device, scene_.geometry, lights_.selection(), gather, plan, linear, aovs, times);
         kept_.trim();  // only what this frame used again is kept for the next
     }

@@ -41,7 +41,7 @@ public:
 
     void run(const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times) override {
         device_.begin();
-        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light, plan.settings);
+        const PhotonGatherPass gather = make_gather_pass(device_photons_, plan.direct_light(), plan.settings);
         run_frame(device_, device_geometry_, device_lights_, gather, plan, linear, aovs, times);
     }
 

@@ -8,24 +8,10 @@
 #include "formats/geometry_layout.h"
 #include "runtime/render/image.h"
 #include "runtime/render/post_process.h"
+#include "runtime/render/render_modes.h"
 #include "runtime/render/stage_times.h"
 
 namespace kdpm {
-
-enum class RenderMode : std::uint32_t {
-    photons = 0,         // the report's method: all light from the k nearest photons at the first diffuse hit
-    direct_photons = 1,  // direct light by shadow rays + indirect (global map, bounce >= 1) + caustics map
-    direct = 2,          // direct light only (no photon map needed)
-    path = 3,            // the reference: unbiased path tracing with next-event estimation (no photon map)
-    sppm = 4,            // stochastic progressive photon mapping: photons re-shot each pass (no photon map)
-    final_gather = 5,    // direct light by shadow rays + caustics map + gather rays reading the global map
-};
-// photons, direct+photons and final-gather read a photon map; direct and path do not.
-inline bool mode_needs_photons(RenderMode mode) {
-    return mode == RenderMode::photons || mode == RenderMode::direct_photons || mode == RenderMode::final_gather;
-}
-RenderMode parse_render_mode(std::string_view text);  // throws std::invalid_argument
-const char* render_mode_name(RenderMode mode);
 
 // The most gather rays per diffuse point (mode final-gather): a ray's index shares a 32-bit
 // random-number counter with its vertex.

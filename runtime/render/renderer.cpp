@@ -8,36 +8,15 @@
 #include <string>
 #include <utility>
 
+#include "formats/scene_limits.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/render/image_pool.h"
+#include "runtime/render/image_size.h"
 #include "runtime/render/post_process.h"
 #include "runtime/shading/ray_offset.h"
 #include "runtime/render/frame_memory.h"
 
 namespace kdpm {
-
-RenderMode parse_render_mode(std::string_view text) {
-    if (text == "photons") return RenderMode::photons;
-    if (text == "direct+photons") return RenderMode::direct_photons;
-    if (text == "direct") return RenderMode::direct;
-    if (text == "path") return RenderMode::path;
-    if (text == "sppm") return RenderMode::sppm;
-    if (text == "final-gather") return RenderMode::final_gather;
-    throw std::invalid_argument("expected photons, direct+photons, direct, path, sppm or final-gather, got '" +
-                                std::string(text) + "'");
-}
-
-const char* render_mode_name(RenderMode mode) {
-    switch (mode) {
-        case RenderMode::photons: return "photons";
-        case RenderMode::direct_photons: return "direct+photons";
-        case RenderMode::direct: return "direct";
-        case RenderMode::path: return "path";
-        case RenderMode::sppm: return "sppm";
-        case RenderMode::final_gather: return "final-gather";
-    }
-    return "?";
-}
 
 // The irradiance cache kept between frames, with what its records depend on: the settings of the
 // gather rays and of the photon estimates they read (not the camera: irradiance is view-independent).
@@ -93,9 +72,7 @@ SppmPlan sppm_plan(const RenderSettings& settings, const SceneViews& scene, std:
         throw std::runtime_error(text);
     }
     const GeometryInfo& g = scene.geometry.info;
-    const float diagonal = std::sqrt(std::pow(g.bounds_max[0] - g.bounds_min[0], 2.0f) +
-                                     std::pow(g.bounds_max[1] - g.bounds_min[1], 2.0f) +
-                                     std::pow(g.bounds_max[2] - g.bounds_min[2], 2.0f));
+    const auto diagonal = static_cast<float>(bounds_diagonal(g.bounds_min, g.bounds_max));
     // The photon map's typical k-nearest radius when there is one, else 1/100 of the scene.
     sppm.initial_radius = settings.sppm_radius > 0.0f         ? settings.sppm_radius
                           : scene.photons.typical_radius > 0.0f ? scene.photons.typical_radius
@@ -145,21 +122,13 @@ RenderResult Renderer::render(const RenderSettings& settings) {
     FramePlan plan;
     plan.settings = settings;
     const CameraRecord camera = settings.camera ? *settings.camera : scene_.camera;
-    plan.width = settings.width ? settings.width : camera.width;
-    plan.height = settings.height ? settings.height : camera.height;
-    // Only one side given: keep the camera's aspect ratio.
-    if (settings.width && !settings.height && camera.width && camera.height)
-        plan.height = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(
-            std::lround(static_cast<double>(settings.width) * camera.height / camera.width)));
-    if (settings.height && !settings.width && camera.width && camera.height)
-        plan.width = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(
-            std::lround(static_cast<double>(settings.height) * camera.width / camera.height)));
-    if (plan.width == 0 || plan.height == 0 || plan.width > 16384 || plan.height > 16384)
-        throw std::runtime_error("image size " + std::to_string(plan.width) + "x" + std::to_string(plan.height) +
-                                 " is out of range (1..16384)");
+    const ImageSize size = image_size(settings.width, settings.height, camera);
+    plan.width = size.width;
+    plan.height = size.height;
     if (!(camera.vfov_degrees > 0.0f && camera.vfov_degrees < 180.0f))
         throw std::runtime_error("camera field of view must be in (0, 180) degrees");
-    plan.progressive = settings.mode == RenderMode::sppm;
+    const bool progressive = settings.mode == RenderMode::sppm;
+    const bool final_gather = settings.mode == RenderMode::final_gather;
     const std::uint32_t spp = std::max<std::uint32_t>(1, settings.spp);
     if (settings.first_sample > std::numeric_limits<std::uint32_t>::max() - spp)
         throw std::runtime_error("samples from " + std::to_string(settings.first_sample) + " on: too many for one run");
@@ -168,42 +137,36 @@ RenderResult Renderer::render(const RenderSettings& settings) {
         throw std::runtime_error("samples " + std::to_string(settings.first_sample) + ".." +
                                  std::to_string(settings.first_sample + spp - 1) + " are outside a run of " +
                                  std::to_string(sequence));
-    if (plan.progressive && settings.first_sample != 0)
+    if (progressive && settings.first_sample != 0)
         throw std::runtime_error("sppm renders whole runs of passes: no first sample can be given");
-    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, plan.progressive ? settings.passes : sequence);
+    plan.camera = PinholeCamera::from_record(camera, plan.width, plan.height, progressive ? settings.passes : sequence);
     plan.epsilon = render_ray_offset(scene_.geometry.info);
-    plan.direct_light = settings.mode != RenderMode::photons;
-    plan.path_trace = settings.mode == RenderMode::path;
-    plan.final_gather = settings.mode == RenderMode::final_gather;
-    if (plan.final_gather && (settings.gather_rays < 1 || settings.gather_rays > kMaxGatherRays))
+    if (final_gather && (settings.gather_rays < 1 || settings.gather_rays > kMaxGatherRays))
         throw std::runtime_error("gather rays must be in 1.." + std::to_string(kMaxGatherRays));
-    if (plan.final_gather && settings.irradiance_cache && !(settings.ic_accuracy > 0.0f && settings.ic_accuracy <= 1.0f))
+    if (final_gather && settings.irradiance_cache && !(settings.ic_accuracy > 0.0f && settings.ic_accuracy <= 1.0f))
         throw std::runtime_error("irradiance cache accuracy must be in (0, 1]");
     // The cache's records live on the host: the CUDA backend gathers at every vertex.
-    plan.irradiance_cache = plan.final_gather && settings.irradiance_cache && backend_ == BackendKind::cpu;
+    plan.irradiance_cache = final_gather && settings.irradiance_cache && backend_ == BackendKind::cpu;
     {
         const auto& info = scene_.geometry.info;
-        const float dx = info.bounds_max[0] - info.bounds_min[0], dy = info.bounds_max[1] - info.bounds_min[1],
-                    dz = info.bounds_max[2] - info.bounds_min[2];
-        const float diagonal = std::sqrt(dx * dx + dy * dy + dz * dz);
+        const auto diagonal = static_cast<float>(bounds_diagonal(info.bounds_min, info.bounds_max));
         plan.cache_min_radius = diagonal > 0.0f ? 1e-3f * diagonal : 1e-6f;
         plan.cache_max_radius = diagonal > 0.0f ? 0.5f * diagonal : 1e30f;
     }
-    plan.gather_photons = mode_needs_photons(settings.mode);
-    if (plan.gather_photons && scene_.photons.empty())
+    if (plan.gather_photons() && scene_.photons.empty())
         throw std::runtime_error(std::string("mode ") + render_mode_name(settings.mode) +
                                  " needs a photon map (.kdp); use --mode direct without one");
     // Memory the backend keeps from the last frame is this frame's to use again.
     check_frame_memory(plan.width, plan.height,
-                       frame_memory_bytes(plan.width, plan.height, plan.gather_photons, settings.aovs),
+                       frame_memory_bytes(plan.width, plan.height, plan.gather_photons(), settings.aovs),
                        available_memory_bytes() + impl_->kept_bytes());
     if (plan.settings.k == 0) plan.settings.k = scene_.geometry.info.default_k ? scene_.geometry.info.default_k : 100;
-    if (plan.gather_photons && settings.fixed_radius &&
+    if (plan.gather_photons() && settings.fixed_radius &&
         !(settings.max_radius > 0.0f || (settings.max_radius < 0.0f && scene_.photons.typical_radius > 0.0f)))
         throw std::runtime_error(
             "a fixed-radius gather needs a radius: the photon map records none, give one (--max-radius R > 0)");
 
-    if (plan.progressive) plan.sppm = sppm_plan(settings, scene_, plan.width, plan.height);
+    if (progressive) plan.sppm = sppm_plan(settings, scene_, plan.width, plan.height);
 
     if (plan.irradiance_cache && settings.keep_irradiance_cache) {
         if (!kept_cache_ || !(kept_cache_->key == KeptIrradianceCache::key_of(plan)) ||

@@ -9,8 +9,6 @@
 namespace kdpm {
 namespace {
 
-const RenderMode kModes[] = {RenderMode::photons, RenderMode::direct_photons, RenderMode::direct, RenderMode::path,
-                            RenderMode::sppm, RenderMode::final_gather};
 const ViewKind kViews[] = {ViewKind::shaded, ViewKind::depth, ViewKind::normal, ViewKind::photon_density};
 const ToneMap kToneMaps[] = {ToneMap::aces, ToneMap::reinhard, ToneMap::none};
 
@@ -76,8 +74,9 @@ PanelActions draw_control_panel(const PanelModel& m) {
     ImGui::Text("backend: %s", m.backend.c_str());
 
     if (ImGui::BeginCombo("mode", render_mode_name(o.mode))) {
-        for (RenderMode mode : kModes) {
-            const bool usable = m.have_photons || !mode_needs_photons(mode);
+        for (const RenderModeInfo& info : render_modes()) {
+            const RenderMode mode = info.mode;
+            const bool usable = m.have_photons || !info.needs_photons;
             if (usable && ImGui::Selectable(render_mode_name(mode), mode == o.mode) && mode != o.mode) {
                 o.mode = mode;
                 act.rerender = true;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "formats/scene_limits.h"
+
 namespace kdpm {
 
 namespace {
@@ -21,7 +23,7 @@ constexpr float kMaxPitch = 1.5533430f;  // 89 degrees: the look-at basis degene
 
 FlyCamera::FlyCamera(const CameraRecord& file_camera, const GeometryInfo& bounds) : file_(file_camera) {
     // Crossing a typical scene takes about five seconds; shift for more.
-    const float diagonal = glm::length(vec(bounds.bounds_max) - vec(bounds.bounds_min));
+    const auto diagonal = static_cast<float>(bounds_diagonal(bounds.bounds_min, bounds.bounds_max));
     speed_ = std::isfinite(diagonal) && diagonal > 0.0f ? diagonal * 0.2f : 1.0f;
     reset();
 }

@@ -38,17 +38,15 @@ void ViewOptions::halve_k() { k = clamp_k(k / 2); }
 void ViewOptions::double_k() { k = clamp_k(k * 2); }
 
 void ViewOptions::next_mode(bool have_photons) {
-    if (!have_photons) {
-        mode = RenderMode::direct;
-        return;
-    }
-    switch (mode) {
-        case RenderMode::photons: mode = RenderMode::direct_photons; break;
-        case RenderMode::direct_photons: mode = RenderMode::direct; break;
-        case RenderMode::direct: mode = RenderMode::photons; break;
-        case RenderMode::path:  // path, sppm and final-gather are chosen in the panel
-        case RenderMode::sppm:
-        case RenderMode::final_gather: mode = RenderMode::photons; break;
+    const auto modes = render_modes();
+    std::size_t at = 0;
+    while (at < modes.size() && modes[at].mode != mode) ++at;
+    for (std::size_t step = 1; step <= modes.size(); ++step) {
+        const RenderModeInfo& next = modes[(at + step) % modes.size()];
+        if (next.in_key_cycle && (have_photons || !next.needs_photons)) {
+            mode = next.mode;
+            return;
+        }
     }
 }
 
@@ -86,10 +84,15 @@ void ViewOptions::next_tone_map() {
 }
 
 std::string key_help_text() {
+    std::string cycle, panel;
+    for (const RenderModeInfo& m : render_modes()) {
+        std::string& list = m.in_key_cycle ? cycle : panel;
+        list += (list.empty() ? "" : m.in_key_cycle ? " / " : ", ") + std::string(m.name);
+    }
     return "W/A/S/D  move   Q/E  down/up   shift  faster\n"
            "drag     look   R    reset to the file's camera\n"
-           "[ ]      halve/double k (2..256)\n"
-           "M        mode: photons / direct+photons / direct (path: in the panel)\n"
+           "[ ]      halve/double k (" + std::to_string(ViewOptions::kMinK) + ".." + std::to_string(ViewOptions::kMaxK) + ")\n"
+           "M        mode: " + cycle + " (" + panel + ": in the panel)\n"
            "V        view: shaded / depth / normal / photon density\n"
            "+ -      exposure   T  tone mapper\n"
            "F12      screenshot (PNG in the working folder)\n"

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "formats/scene_limits.h"
 #include "runtime/render/post_process.h"
 #include "runtime/render/render_settings.h"
 
@@ -16,7 +17,7 @@ ViewKind parse_view(std::string_view text);  // shaded, depth, normal, density; 
 const char* tone_map_name(ToneMap t);
 
 struct ViewOptions {
-    static constexpr std::uint32_t kMinK = 2, kMaxK = 256;
+    static constexpr std::uint32_t kMinK = kMinEstimateK, kMaxK = kMaxEstimateK;
     static constexpr float kExposureStep = 0.5f;
 
     std::uint32_t k = 64;
@@ -29,14 +30,18 @@ struct ViewOptions {
 
     void halve_k();
     void double_k();
-    // photons -> direct+photons -> direct -> photons; without a photon map only direct. Path
-    // (the slow reference) is left out of the key's cycle; the panel's combo selects it.
+    // The next mode of the key's cycle (render_modes.h: in_key_cycle) that this scene can render;
+    // the slow ones are left to the panel's combo.
     void next_mode(bool have_photons);
     // shaded -> depth -> normal -> photon density (only with a photon map) -> shaded.
     void next_view(bool have_photons);
     void next_tone_map();  // aces -> reinhard -> none
-    void brighter() { exposure_stops = exposure_stops + kExposureStep > 16.0f ? 16.0f : exposure_stops + kExposureStep; }
-    void darker() { exposure_stops = exposure_stops - kExposureStep < -16.0f ? -16.0f : exposure_stops - kExposureStep; }
+    void brighter() {
+        exposure_stops = exposure_stops + kExposureStep > kMaxExposureStops ? kMaxExposureStops : exposure_stops + kExposureStep;
+    }
+    void darker() {
+        exposure_stops = exposure_stops - kExposureStep < -kMaxExposureStops ? -kMaxExposureStops : exposure_stops - kExposureStep;
+    }
 };
 
 // The AOVs a frame needs for view v: depth or normals for those views, hit points and normals

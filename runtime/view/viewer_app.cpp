@@ -14,6 +14,7 @@
 
 #include "runtime/render/frame_memory.h"
 #include "runtime/render/image_output.h"
+#include "runtime/render/image_size.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "runtime/view/camera_command_line.h"
@@ -34,19 +35,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Full image size: the options, else the camera's, keeping the camera's aspect when only one
-// side is given (as the Renderer does).
-void image_size(const ViewerConfig& cfg, const CameraRecord& cam, std::uint32_t& w, std::uint32_t& h) {
-    w = cfg.width ? cfg.width : cam.width;
-    h = cfg.height ? cfg.height : cam.height;
-    if (cfg.width && !cfg.height && cam.width && cam.height)
-        h = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(double(cfg.width) * cam.height / cam.width)));
-    if (cfg.height && !cfg.width && cam.width && cam.height)
-        w = std::max<std::uint32_t>(1, static_cast<std::uint32_t>(std::lround(double(cfg.height) * cam.width / cam.height)));
-    if (w == 0 || h == 0 || w > 16384 || h > 16384)
-        throw std::runtime_error("image size " + std::to_string(w) + "x" + std::to_string(h) +
-                                 " is out of range (1..16384)");
-}
 
 class Viewer {
 public:
@@ -55,7 +43,9 @@ public:
         : cfg_(cfg), renderer_(renderer), window_(window),
           camera_(start_camera, scene.views().geometry.info), worker_(renderer),
           schedule_(1, 1, cfg.max_spp, cfg.preview_divisor), max_spp_(cfg.max_spp), light_samples_(cfg.light_samples) {
-        image_size(cfg, start_camera, width_, height_);
+        const ImageSize size = image_size(cfg.width, cfg.height, start_camera);
+        width_ = size.width;
+        height_ = size.height;
         schedule_ = RefinementSchedule(width_, height_, max_spp_, cfg.preview_divisor);
         have_photons_ = !scene.views().photons.empty();
         photons_ = scene.views().photons;
@@ -395,8 +385,7 @@ int run_viewer(const ViewerConfig& cfg) {
     if (cfg.view == ViewKind::photon_density && scene.views().photons.empty())
         throw std::runtime_error("the density view needs a photon map (.kdp)");
     const CameraRecord start_camera = cfg.camera.applied_to(scene.views().camera);
-    std::uint32_t w = 0, h = 0;
-    image_size(cfg, start_camera, w, h);
+    const auto [w, h] = image_size(cfg.width, cfg.height, start_camera);
     check_frame_memory(w, h, viewer_memory_bytes(w, h, !scene.views().photons.empty()), available_memory_bytes());
     GlWindow window(static_cast<int>(w), static_cast<int>(h), "kdpm-view");
     BackendSelection selected = select_backend(cfg.backend);

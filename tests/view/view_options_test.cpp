@@ -4,7 +4,7 @@
 
 using namespace kdpm;
 
-TEST_CASE("view options keep k within 2 to 256 when halving and doubling", "[view][options]") {
+TEST_CASE("view options keep k within the estimate's range (that of kdpm-render's --k) when halving and doubling", "[view][options]") {
     ViewOptions o;
     o.k = 64;
     o.double_k();
@@ -14,11 +14,13 @@ TEST_CASE("view options keep k within 2 to 256 when halving and doubling", "[vie
     CHECK(o.k == 256);
     o.k = 3;
     o.halve_k();
-    CHECK(o.k == 2);
+    CHECK(o.k == 1);
     o.halve_k();
-    CHECK(o.k == 2);
-    CHECK(clamp_k(0) == 2);
+    CHECK(o.k == 1);
+    CHECK(clamp_k(0) == 1);
     CHECK(clamp_k(1000) == 256);
+    CHECK(ViewOptions::kMinK == kMinEstimateK);
+    CHECK(ViewOptions::kMaxK == kMaxEstimateK);
 }
 
 TEST_CASE("view options offer photon modes and the density view only with a photon map", "[view][options]") {
@@ -32,6 +34,16 @@ TEST_CASE("view options offer photon modes and the density view only with a phot
     CHECK(o.mode == RenderMode::direct_photons);
     o.next_mode(true);
     CHECK(o.mode == RenderMode::direct);
+    // The slow modes are chosen in the panel; the key leaves them for the cycle's next mode.
+    for (RenderMode slow : {RenderMode::path, RenderMode::sppm, RenderMode::final_gather}) {
+        o.mode = slow;
+        o.next_mode(true);
+        CHECK(o.mode == RenderMode::photons);
+        o.mode = slow;
+        o.next_mode(false);
+        CHECK(o.mode == RenderMode::direct);
+    }
+    CHECK(key_help_text().find("photons / direct+photons / direct") != std::string::npos);
 
     o.view = ViewKind::shaded;
     o.next_view(false);
@@ -54,10 +66,12 @@ TEST_CASE("view options cycle tone mappers and bound the exposure", "[view][opti
     CHECK(o.tone_map == ToneMap::none);
     o.next_tone_map();
     CHECK(o.tone_map == ToneMap::aces);
-    for (int i = 0; i < 100; ++i) o.brighter();
-    CHECK(o.exposure_stops == 16.0f);
+    for (int i = 0; i < 200; ++i) o.brighter();
+    CHECK(o.exposure_stops == kMaxExposureStops);
     o.darker();
-    CHECK(o.exposure_stops == 15.5f);
+    CHECK(o.exposure_stops == kMaxExposureStops - 0.5f);
+    for (int i = 0; i < 200; ++i) o.darker();
+    CHECK(o.exposure_stops == -kMaxExposureStops);
     CHECK(parse_view("density") == ViewKind::photon_density);
     CHECK_THROWS_AS(parse_view("sideways"), std::invalid_argument);
     CHECK(key_help_text().find("F12") != std::string::npos);

@@ -103,12 +103,12 @@ std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
         return RungSettings{plural(s.passes, "pass", "passes"), s};
     };
     return {
-        {"path", by_spp(RenderMode::path), stop},
-        {"photons", by_spp(RenderMode::photons), stop},
-        {"direct+photons", by_spp(RenderMode::direct_photons), stop},
-        {"final-gather + cache", by_gather_rays(16, true), stop},
-        {"final-gather, no cache", by_gather_rays(4, false), stop},
-        {"sppm", by_passes, std::max(stop, c.sppm_seconds)},
+        {ladder_label(RenderMode::path), by_spp(RenderMode::path), stop},
+        {ladder_label(RenderMode::photons), by_spp(RenderMode::photons), stop},
+        {ladder_label(RenderMode::direct_photons), by_spp(RenderMode::direct_photons), stop},
+        {ladder_label(RenderMode::final_gather, kCachedGather), by_gather_rays(16, true), stop},
+        {ladder_label(RenderMode::final_gather, kUncachedGather), by_gather_rays(4, false), stop},
+        {ladder_label(RenderMode::sppm), by_passes, std::max(stop, c.sppm_seconds)},
     };
 }
 

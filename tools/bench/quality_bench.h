@@ -11,6 +11,7 @@
 
 #include "runtime/backend/backend_kind.h"
 #include "runtime/render/image.h"
+#include "runtime/render/render_modes.h"
 
 namespace kdpm::bench {
 
@@ -40,8 +41,14 @@ struct Rung {
     std::array<double, 3> third_ratio{}; // the same per horizontal third, top to bottom
 };
 
+// A ladder's label: the mode's name (render_modes.h), then the variant ("final-gather + cache").
+inline std::string ladder_label(RenderMode mode, const std::string& variant = {}) {
+    return render_mode_name(mode) + variant;
+}
+inline const std::string kCachedGather = " + cache", kUncachedGather = ", no cache";
+
 struct Ladder {
-    std::string mode;  // "path", "photons", "direct+photons", "final-gather + cache", ...
+    std::string mode;  // ladder_label: "path", "photons", "direct+photons", "final-gather + cache", ...
     std::vector<Rung> rungs;
 };
 

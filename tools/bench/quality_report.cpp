@@ -47,10 +47,12 @@ std::string equal_time_table(const QualityResult& r, bool md) {
 
 std::string verdicts(const QualityResult& r) {
     std::string out;
-    const Ladder* fg = find(r, "final-gather + cache");
+    const Ladder* fg = find(r, ladder_label(RenderMode::final_gather, kCachedGather));
     const Rung* cached = fg ? best_within(*fg, r.seconds) : nullptr;
-    for (const char* other : {"photons", "direct+photons"}) {
-        const Ladder* l = find(r, other);
+    for (const RenderMode other_mode : {RenderMode::photons, RenderMode::direct_photons}) {
+        const std::string label = ladder_label(other_mode);
+        const char* other = label.c_str();
+        const Ladder* l = find(r, label);
         const Rung* o = l ? best_within(*l, r.seconds) : nullptr;
         if (!cached || !o) {
             out += fmt("- final-gather + cache relMSE <= 1/4 of %s at %g s: %s\n", other, r.seconds,
@@ -67,7 +69,7 @@ std::string verdicts(const QualityResult& r) {
         out += fmt("- final-gather + cache mean within 2 %% of the reference in every third at %g s: worst %.1f %%: %s\n",
                    r.seconds, 100.0 * worst, verdict(worst <= 0.02).c_str());
     }
-    if (const Ladder* sppm = find(r, "sppm"); sppm && !sppm->rungs.empty()) {
+    if (const Ladder* sppm = find(r, ladder_label(RenderMode::sppm)); sppm && !sppm->rungs.empty()) {
         const auto lowest = std::min_element(sppm->rungs.begin(), sppm->rungs.end(),
                                              [](const Rung& a, const Rung& b) { return a.relmse < b.relmse; });
         out += fmt("- sppm reaches relMSE <= 0.01: lowest %.4g (%s, %.1f s): %s\n", lowest->relmse,

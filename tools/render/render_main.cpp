@@ -17,7 +17,7 @@
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/cli/args.h"
-#include "tools/cli/camera_override.h"
+#include "tools/cli/render_options.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
 
@@ -57,23 +57,19 @@ float parse_ic_accuracy(const std::string& text) {
 int run(int argc, char** argv) {
     std::string geometry_path, photon_path, output;
     RenderSettings settings;
-    int width = 0, height = 0, spp = 1, k = 0, light_samples = 16, max_depth = 8, max_bounces = 0, threads = 0;
+    cli::RenderOptions common;
+    int spp = 1, max_depth = 8, max_bounces = 0;
     int passes = 0, photons_per_pass = 0;  // 0: not given
     int gather_rays = 64;
-    double exposure = 0.0, max_radius = -1.0, disc = 0.0, sppm_radius = 0.0;
-    bool quiet = false;
-    BackendRequest backend = BackendRequest::automatic;
-    CameraOverride camera;
+    double max_radius = -1.0, disc = 0.0, sppm_radius = 0.0;
 
     cli::Args args("kdpm-render", "Render a frame of a kdpm scene (geometry kd-tree + photon kd-tree) to an image.");
     args.positional("scene.kdg", &geometry_path, "geometry kd-tree from kdpm-build-geometry")
         .positional("scene.kdp", &photon_path, "photon kd-tree from kdpm-build-photons (not needed for --mode direct)",
                     false)
-        .option("output", &output, "FILE", "output image, format by extension (.png, .exr, ...)")
-        .option("width", &width, "N", "image width (default: the scene camera's)", 1, 16384)
-        .option("height", &height, "N", "image height (default: the scene camera's)", 1, 16384)
-        .option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
-        .option("k", &k, "N", "photons per radiance estimate, at most 256 (default: the scene card's)", 1, 256)
+        .option("output", &output, "FILE", "output image, format by extension (.png, .exr, ...)");
+    cli::add_render_options(args, common, "photons (all light from the photon map)");
+    args.option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
         .option("max-radius", &max_radius, "R",
                 "photon search limit (default: automatic, 4x the photon map's typical k-radius; 0: none)", 0.0, 1e30)
         .option("filter", "box|cone", "photon weights in the estimate: box (default: all equal) or cone (nearer count more)",
@@ -91,12 +87,6 @@ int run(int argc, char** argv) {
         .option("disc", &disc, "F",
                 "flatten the photon search toward the surface against leaks (0: a sphere, the default; F: the "
                 "axis along the normal is 1/sqrt(1+F) as long)", 0.0, 1e6)
-        .option("mode", "MODE", "photons (default: all light from the photon map), direct+photons, direct, path (the "
-                "path-traced reference; no photon map needed), sppm (progressive photon mapping, photons shot anew "
-                "each pass; no photon map needed) or final-gather (gather rays read the photon map)",
-                [&](const std::string& v) { settings.mode = parse_render_mode(v); })
-        .option("light-samples", &light_samples, "N", "shadow rays at each diffuse point, lights picked by power (default 16)", 1,
-                4096)
         .option("max-depth", &max_depth, "N", "mirror/glass bounces followed (default 8)", 1, 64)
         .option("max-bounces", &max_bounces, "N",
                 "modes path and sppm: diffuse bounces shaded per path, 1 = direct light only (default 0: unlimited, "
@@ -120,19 +110,15 @@ int run(int argc, char** argv) {
         .option("ic-accuracy", "A",
                 "irradiance cache error bound a in (0, 1]: smaller makes more records (default 0.2)",
                 [&](const std::string& v) { settings.ic_accuracy = parse_ic_accuracy(v); })
-        .option("backend", "auto|cpu|cuda", "where kernels run (default auto: CUDA when a device exists)",
-                [&](const std::string& v) { backend = parse_backend_request(v); })
         .option("aov", "LIST", "also write depth,normal,position,triangle (EXR channels or out.NAME.exr files)",
                 [&](const std::string& v) { settings.aovs = parse_aovs(v); })
-        .option("exposure", &exposure, "STOPS", "exposure in stops (default 0)", -32.0, 32.0)
-        .option("tonemap", "reinhard|aces|none", "tone mapping for 8-bit outputs (default aces)",
-                [&](const std::string& v) { settings.post.tone_map = parse_tone_map(v); })
-        .flag("bloom", &settings.post.bloom, "add a glow around bright pixels")
-        .option("threads", &threads, "N", "CPU worker threads, 0 = all cores (default 0)", 0, 4096)
-        .flag("quiet", &quiet, "print nothing but errors");
-    cli::add_camera_options(args, camera);
+        .flag("bloom", &settings.post.bloom, "add a glow around bright pixels");
+    cli::add_camera_options(args, common.camera);
     args.short_name('o', "output");
     args.parse(argc, argv);
+    if (common.mode) settings.mode = *common.mode;
+    settings.post.tone_map = common.tone_map;
+    const bool quiet = common.quiet;
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
     if (settings.mode != RenderMode::sppm && (passes || photons_per_pass || sppm_radius > 0.0))
         throw std::invalid_argument("--passes, --photons-per-pass and --sppm-radius are for --mode sppm");
@@ -140,28 +126,28 @@ int run(int argc, char** argv) {
     std::vector<std::filesystem::path> inputs{geometry_path};
     if (!photon_path.empty()) inputs.push_back(photon_path);
     check_output_destination(output, inputs);
-    ThreadLimit limit(threads);
+    ThreadLimit limit(common.threads);
 
-    BackendSelection selected = select_backend(backend);
+    BackendSelection selected = select_backend(common.backend);
     if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-render: " << selected.notice << "\n";
 
     std::optional<std::filesystem::path> photons;
     if (!photon_path.empty()) photons = photon_path;
     LoadedScene scene = LoadedScene::load(geometry_path, photons);
-    settings.camera = camera.applied_to(scene.views().camera);
+    settings.camera = common.camera.applied_to(scene.views().camera);
     const GeometryInfo& bounds = scene.views().geometry.info;
     if (radius_too_small(max_radius, bounds.bounds_min, bounds.bounds_max))
         throw std::invalid_argument("--max-radius " + radius_limit_text(max_radius, bounds.bounds_min, bounds.bounds_max) +
                                     ": no photon would be found (0: no limit)");
     Renderer renderer(scene.views(), selected.kind);
 
-    settings.width = static_cast<std::uint32_t>(width);
-    settings.height = static_cast<std::uint32_t>(height);
+    settings.width = static_cast<std::uint32_t>(common.width);
+    settings.height = static_cast<std::uint32_t>(common.height);
     settings.spp = static_cast<std::uint32_t>(spp);
-    settings.k = static_cast<std::uint32_t>(k);
+    settings.k = static_cast<std::uint32_t>(common.k);
     settings.max_radius = static_cast<float>(max_radius);
     settings.disc_flatten = static_cast<float>(disc);
-    settings.light_samples = static_cast<std::uint32_t>(light_samples);
+    settings.light_samples = static_cast<std::uint32_t>(common.light_samples);
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.max_bounces = static_cast<std::uint32_t>(max_bounces);
     if (passes) settings.passes = static_cast<std::uint32_t>(passes);
@@ -177,7 +163,7 @@ int run(int argc, char** argv) {
         !quiet)
         std::cerr << "kdpm-render: the irradiance cache runs on the CPU backend only; on CUDA every diffuse point "
                      "sends gather rays\n";
-    settings.post.exposure_stops = static_cast<float>(exposure);
+    settings.post.exposure_stops = static_cast<float>(common.exposure);
     cli::Progress progress("rendering", quiet);
     settings.progress = [&](double f) { progress.update(f); };
 

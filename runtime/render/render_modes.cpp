@@ -1,0 +1,40 @@
+#include "runtime/render/render_modes.h"
+
+#include <stdexcept>
+
+namespace kdpm {
+
+const RenderModeInfo& mode_info(RenderMode mode) {
+    for (const RenderModeInfo& m : kRenderModes)
+        if (m.mode == mode) return m;
+    throw std::invalid_argument("unknown render mode " + std::to_string(static_cast<std::uint32_t>(mode)));
+}
+
+std::string render_mode_names() {
+    std::string text;
+    const std::size_t n = std::size(kRenderModes);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i) text += i + 1 == n ? " or " : ", ";
+        text += kRenderModes[i].name;
+    }
+    return text;
+}
+
+RenderMode parse_render_mode(std::string_view text) {
+    for (const RenderModeInfo& m : kRenderModes)
+        if (text == m.name) return m.mode;
+    throw std::invalid_argument("expected " + render_mode_names() + ", got '" + std::string(text) + "'");
+}
+
+std::string render_mode_help(std::string_view default_text) {
+    std::string text;
+    const std::size_t n = std::size(kRenderModes);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i) text += i + 1 == n ? " or " : ", ";
+        text += kRenderModes[i].name;
+        text += std::string(" (") + kRenderModes[i].help + ")";
+    }
+    return text + "; default: " + std::string(default_text);
+}
+
+}  // namespace kdpm

@@ -43,8 +43,7 @@ struct FramePlan {
     RenderMode mode() const { return settings.mode; }
     bool gather_photons() const { return mode_needs_photons(settings.mode); }
     bool direct_light() const { return mode_info(settings.mode).direct_light; }
-    // Modes but path keep each pixel's diffuse vertices between the trace and the shade pass.
-    bool keeps_vertices() const { return settings.mode != RenderMode::path; }
+    bool keeps_vertices() const { return mode_info(settings.mode).diffuse_vertices; }
 };
 
 // The samples of a frame: the frame arrays (vertex slots when the mode keeps them), then
@@ -54,7 +53,7 @@ template <class Device, class Sample>
 void run_samples(Device& dev, const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times,
                  Sample&& sample) {
     const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
-    // The path pass keeps its vertices in registers: only the sums and the AOVs.
+    // Modes without a shade pass (path: its vertices stay in registers) need only the sums and AOVs.
     const std::uint64_t per_pixel = plan.keeps_vertices() ? pixels : 0;
     const std::uint64_t slots = per_pixel * kMaxDiffuseVertices;
     const AovSet& want = plan.settings.aovs;

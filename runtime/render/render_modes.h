@@ -24,18 +24,20 @@ struct RenderModeInfo {
     const char* help;        // a clause for --help
     bool needs_photons;      // reads the photon map of a .kdp at the diffuse points
     bool direct_light;       // shadow rays at the diffuse points (else all light from the photons)
+    bool diffuse_vertices;   // the trace pass keeps each pixel's diffuse vertices for a gather and shade pass
     bool in_key_cycle;       // kdpm-view's M key steps through it (the slow ones only in the panel)
 };
 
 inline constexpr RenderModeInfo kRenderModes[] = {
-    {RenderMode::photons, "photons", "all light from the photon map", true, false, true},
+    // mode, name, help, needs photons, direct light, diffuse vertices, in the key cycle
+    {RenderMode::photons, "photons", "all light from the photon map", true, false, true, true},
     {RenderMode::direct_photons, "direct+photons", "shadow rays for direct light, the photon map for the rest", true,
-     true, true},
-    {RenderMode::direct, "direct", "direct light only; no photon map needed", false, true, true},
-    {RenderMode::path, "path", "the path-traced reference; no photon map needed", false, true, false},
+     true, true, true},
+    {RenderMode::direct, "direct", "direct light only; no photon map needed", false, true, true, true},
+    {RenderMode::path, "path", "the path-traced reference; no photon map needed", false, true, false, false},
     {RenderMode::sppm, "sppm", "progressive photon mapping, photons shot anew each pass; no photon map needed", false,
-     true, false},
-    {RenderMode::final_gather, "final-gather", "gather rays read the photon map", true, true, false},
+     true, false, false},
+    {RenderMode::final_gather, "final-gather", "gather rays read the photon map", true, true, true, false},
 };
 
 inline std::span<const RenderModeInfo> render_modes() { return kRenderModes; }

@@ -10,6 +10,7 @@
 #include "runtime/backend/device_concept.h"
 #include "runtime/backend/items_on_host.h"
 #include "runtime/geometry/geometry_view.h"
+#include "runtime/render/albedo_pass.h"
 #include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/packet_trace_pass.h"
@@ -168,6 +169,11 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
             return run_sppm(dev, geometry, lights, plan.camera, plan.width, plan.height, plan.settings, plan.epsilon,
                             plan.sppm, linear, aovs, times);
         case RenderMode::path: return run_path_frame(dev, geometry, lights, plan, linear, aovs, times);
+        case RenderMode::albedo:
+            return run_samples(dev, plan, linear, aovs, times, [&](const FrameBuffersView& fb, std::uint32_t s, auto& lap, auto&) {
+                dev.launch(static_cast<std::uint64_t>(plan.width) * plan.height, AlbedoPass{geometry, plan.camera, fb, s});
+                times.ray_tracing_ms += lap();
+            });
         case RenderMode::photons:
         case RenderMode::direct_photons:
         case RenderMode::direct:

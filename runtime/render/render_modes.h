@@ -16,6 +16,7 @@ enum class RenderMode : std::uint32_t {
     path = 3,            // the reference: unbiased path tracing with next-event estimation (no photon map)
     sppm = 4,            // stochastic progressive photon mapping: photons re-shot each pass (no photon map)
     final_gather = 5,    // direct light by shadow rays + caustics map + gather rays reading the global map
+    albedo = 6,          // debug: the reflectance at the first hit, no light
 };
 
 struct RenderModeInfo {
@@ -38,6 +39,7 @@ inline constexpr RenderModeInfo kRenderModes[] = {
     {RenderMode::sppm, "sppm", "progressive photon mapping, photons shot anew each pass; no photon map needed", false,
      true, false, false},
     {RenderMode::final_gather, "final-gather", "gather rays read the photon map", true, true, true, false},
+    {RenderMode::albedo, "albedo", "debug: the reflectance at the first hit, no light", false, false, false, false},
 };
 
 inline std::span<const RenderModeInfo> render_modes() { return kRenderModes; }

@@ -1,0 +1,46 @@
+#pragma once
+// --mode albedo, a debug view: the reflectance a camera ray meets first (diffuse albedo with its
+// texture, a mirror's reflectance, glass's transmittance), black where it leaves the scene. No
+// light at all: what a denoiser takes as its albedo guide, and a check of materials and textures.
+#include <cstdint>
+#include <limits>
+
+#include <glm/vec3.hpp>
+
+#include "formats/geometry_layout.h"
+#include "formats/host_device.h"
+#include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/kd_traversal.h"
+#include "runtime/render/camera.h"
+#include "runtime/render/frame_buffers.h"
+#include "runtime/render/tile_order.h"
+#include "runtime/render/trace_pass.h"
+#include "runtime/shading/surface_point.h"
+#include "runtime/shading/texture_lookup.h"
+
+namespace kdpm {
+
+struct AlbedoPass {
+    GeometryView geometry;
+    PinholeCamera camera;
+    FrameBuffersView frame;
+    std::uint32_t sample = 0;
+
+    KDPM_HD void operator()(std::uint64_t item) const {
+        const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
+        const auto x = static_cast<std::uint32_t>(pixel % frame.width), y = static_cast<std::uint32_t>(pixel / frame.width);
+        const CameraRay cam = camera.ray(x, y, sample);
+        const Ray ray{cam.origin, 0.0f, cam.direction, std::numeric_limits<float>::infinity()};
+        const Hit hit = closest_hit(geometry, ray);
+        write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit);
+        if (!hit.found()) return;
+        const MaterialRecord m =
+            material_of(geometry, hit, uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()));
+        const auto kind = static_cast<MaterialKind>(m.kind);
+        frame.accum[pixel] += kind == MaterialKind::mirror  ? to_vec3(m.specular)
+                              : kind == MaterialKind::glass ? to_vec3(m.transmission)
+                                                            : to_vec3(m.diffuse);
+    }
+};
+
+}  // namespace kdpm

@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

@@ -3,7 +3,7 @@
 // for the machine is a clear error instead of a process the OOM killer ends.
 #include <cstdint>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

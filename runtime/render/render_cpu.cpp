@@ -5,7 +5,7 @@
 #include "runtime/render/frame_backend.h"
 #include "runtime/render/frame_memory.h"
 #include "runtime/shading/light_power_table.h"
-#include "runtime/render/photon_density_pass.h"
+#include "runtime/render/passes/photon_density_pass.h"
 
 namespace kdpm {
 

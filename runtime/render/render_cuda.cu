@@ -12,7 +12,7 @@
 #include "runtime/backend/device_scene_upload.cuh"
 #include "runtime/render/frame_backend.h"
 #include "runtime/shading/light_power_table.h"
-#include "runtime/render/photon_density_pass.h"
+#include "runtime/render/passes/photon_density_pass.h"
 
 namespace kdpm {
 

@@ -6,8 +6,8 @@
 #include <string_view>
 
 #include "formats/geometry_layout.h"
-#include "runtime/render/image.h"
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/image.h"
+#include "runtime/render/image/post_process.h"
 #include "runtime/render/render_modes.h"
 #include "runtime/render/stage_times.h"
 

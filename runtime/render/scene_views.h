@@ -3,7 +3,7 @@
 // and the file's camera. The files they point into must outlive the Renderer.
 #include "formats/geometry_layout.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/render/photon_gather_pass.h"
+#include "runtime/photons/photon_maps.h"
 
 namespace kdpm {
 

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/view/view_options.h"
 

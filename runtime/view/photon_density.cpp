@@ -1,7 +1,7 @@
 #include "runtime/view/photon_density.h"
 
 #include "runtime/backend/cpu_device.h"
-#include "runtime/render/photon_density_pass.h"
+#include "runtime/render/passes/photon_density_pass.h"
 
 namespace kdpm {
 

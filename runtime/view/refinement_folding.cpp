@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/post_process.h"
 
 namespace kdpm {
 

@@ -4,7 +4,7 @@
 // after a step is the average of every sample rendered since the view last changed.
 #include <cstdint>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/view/refinement_schedule.h"
 #include "runtime/view/render_worker.h"

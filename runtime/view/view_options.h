@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "formats/scene_limits.h"
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/post_process.h"
 #include "runtime/render/render_settings.h"
 
 namespace kdpm {

@@ -13,7 +13,7 @@
 #include <GLFW/glfw3.h>
 
 #include "runtime/render/frame_memory.h"
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 #include "runtime/render/image_size.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 #include "tests/hostile/fork_child.h"
 #include "tests/support/file_contents.h"
 #include "tests/support/temp_dir.h"

@@ -8,8 +8,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include "formats/oiio/oiio_plugin_loader.h"
-#include "runtime/render/image_encoder.h"
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_encoder.h"
+#include "runtime/render/image/image_output.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "runtime/backend/cpu_parallel_for.h"
-#include "runtime/render/packet_trace_pass.h"
-#include "runtime/render/trace_pass.h"
+#include "runtime/render/passes/packet_trace_pass.h"
+#include "runtime/render/passes/trace_pass.h"
 #include "runtime/shading/ray_offset.h"
 #include "tests/runtime/built_scene.h"
 

@@ -6,7 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;

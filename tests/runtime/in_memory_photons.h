@@ -8,7 +8,7 @@
 #include "builders/photons/irradiance_map_builder.h"
 #include "builders/photons/photon_tree_builder.h"
 #include "runtime/photons/photon_shooter.h"
-#include "runtime/render/photon_gather_pass.h"
+#include "runtime/render/passes/photon_gather_pass.h"
 #include "tests/support/built_tree_view.h"
 #include "tools/photons/irradiance_step.h"
 

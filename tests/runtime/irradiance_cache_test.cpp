@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/render/irradiance_record_tree.h"
+#include "runtime/render/final_gather/irradiance_record_tree.h"
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"
 #include "tests/runtime/in_memory_photons.h"

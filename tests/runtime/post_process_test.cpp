@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "runtime/render/image_pool.h"
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/image_pool.h"
+#include "runtime/render/image/post_process.h"
 
 using namespace kdpm;
 

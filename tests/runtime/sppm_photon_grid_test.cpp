@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "runtime/render/sppm_photon_grid.h"
+#include "runtime/render/sppm/sppm_photon_grid.h"
 
 using namespace kdpm;
 

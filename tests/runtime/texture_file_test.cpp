@@ -17,7 +17,7 @@
 #include "formats/format_error.h"
 #include "formats/section_ids.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/render/image_encoder.h"
+#include "runtime/render/image/image_encoder.h"
 #include "runtime/shading/surface_point.h"
 #include "tests/support/file_contents.h"
 #include "tests/support/run_command.h"

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "runtime/backend/cpu_parallel_for.h"
-#include "runtime/render/photon_tile_gather_pass.h"
-#include "runtime/render/trace_pass.h"
+#include "runtime/render/passes/photon_tile_gather_pass.h"
+#include "runtime/render/passes/trace_pass.h"
 #include "runtime/shading/ray_offset.h"
 #include "tests/runtime/built_scene.h"
 #include "tests/runtime/in_memory_photons.h"

@@ -9,7 +9,7 @@
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
-#include "runtime/render/image_stats.h"
+#include "runtime/render/image/image_stats.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "runtime/render/stage_times.h"

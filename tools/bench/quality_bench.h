@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "runtime/backend/backend_kind.h"
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 #include "runtime/render/render_modes.h"
 
 namespace kdpm::bench {

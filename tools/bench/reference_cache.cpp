@@ -10,7 +10,7 @@
 
 #include "formats/checksum.h"
 #include "formats/metadata.h"
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 #include "tools/render/pfm_reader.h"
 
 namespace kdpm::bench {

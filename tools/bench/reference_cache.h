@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm::bench {
 

@@ -21,7 +21,7 @@
 #include "runtime/photons/photon_shooter.h"
 #include "runtime/photons/radius_hints.h"
 #include "runtime/render/camera.h"
-#include "runtime/render/camera_packet_pass.h"
+#include "runtime/render/passes/camera_packet_pass.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "runtime/shading/counter_random.h"

@@ -7,7 +7,7 @@
 
 #include "runtime/backend/backend_kind.h"
 #include "runtime/render/camera_override.h"
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/post_process.h"
 #include "runtime/render/render_modes.h"
 #include "tools/cli/args.h"
 #include "tools/cli/camera_override.h"

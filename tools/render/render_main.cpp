@@ -13,7 +13,7 @@
 #include "formats/scene_limits.h"
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/cli/args.h"

@@ -13,22 +13,13 @@
 #include "formats/photon_layout.h"
 #include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/photon_map_view.h"
+#include "runtime/photons/photon_maps.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/render_settings.h"
 #include "runtime/render/tile_order.h"
 
 namespace kdpm {
-
-// The photon maps of a .kdp (host or device arrays); empty when no photon file was given.
-struct PhotonMaps {
-    PhotonMapView global;
-    PhotonMapView caustic;
-    IrradianceMapView irradiance;  // the .kdp's precomputed irradiance (final gathering); may be absent
-    bool present = false;
-    float typical_radius = 0.0f;  // median distance to the 32nd nearest photon (.kdp info); 0: unknown
-    bool empty() const { return !present; }
-};
 
 struct PhotonGatherPass {
     FrameBuffersView frame;

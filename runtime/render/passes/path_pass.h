@@ -19,7 +19,7 @@
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/tile_order.h"
-#include "runtime/render/trace_pass.h"
+#include "runtime/render/passes/trace_pass.h"
 #include "runtime/shading/color.h"
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"

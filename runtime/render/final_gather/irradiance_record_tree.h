@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "formats/host_device.h"
-#include "runtime/render/irradiance_record.h"
+#include "runtime/render/final_gather/irradiance_record.h"
 
 namespace kdpm {
 

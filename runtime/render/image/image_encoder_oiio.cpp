@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "formats/oiio/oiio_plugin_loader.h"
-#include "runtime/render/image_encoder.h"
+#include "runtime/render/image/image_encoder.h"
 
 namespace kdpm {
 

@@ -1,4 +1,4 @@
-#include "runtime/render/sample_average.h"
+#include "runtime/render/image/sample_average.h"
 
 #include "runtime/backend/cpu_parallel_for.h"
 

@@ -1,12 +1,12 @@
-#include "runtime/render/irradiance_cache.h"
+#include "runtime/render/final_gather/irradiance_cache.h"
 
 #include <vector>
 
 #include <tbb/task_group.h>
 
 #include "runtime/backend/cpu_device.h"
-#include "runtime/render/cached_gather_pass.h"
-#include "runtime/render/irradiance_record_pass.h"
+#include "runtime/render/final_gather/cached_gather_pass.h"
+#include "runtime/render/final_gather/irradiance_record_pass.h"
 
 namespace kdpm {
 

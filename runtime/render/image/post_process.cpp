@@ -1,4 +1,4 @@
-#include "runtime/render/post_process.h"
+#include "runtime/render/image/post_process.h"
 
 #include <algorithm>
 #include <cmath>

@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "runtime/render/final_gather_pass.h"
-#include "runtime/render/irradiance_record_tree.h"
+#include "runtime/render/final_gather/final_gather_pass.h"
+#include "runtime/render/final_gather/irradiance_record_tree.h"
 
 namespace kdpm {
 

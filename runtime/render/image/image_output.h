@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

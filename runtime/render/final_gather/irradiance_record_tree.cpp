@@ -1,4 +1,4 @@
-#include "runtime/render/irradiance_record_tree.h"
+#include "runtime/render/final_gather/irradiance_record_tree.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 // kdpm's own image encoders: 8-bit PNG (grey or RGB, zlib-compressed, no filter)
 // and float PFM (grey "Pf" or RGB "PF", little-endian, rows bottom to top as the format says).
-#include "runtime/render/image_encoder.h"
+#include "runtime/render/image/image_encoder.h"
 
 #include <algorithm>
 #include <cctype>

@@ -3,7 +3,7 @@
 // the sRGB transfer curve. Per-pixel work runs through the CPU backend (deterministic).
 #include <string_view>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

@@ -17,10 +17,10 @@
 #include "runtime/render/aov_arrays.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 #include "runtime/render/render_settings.h"
-#include "runtime/render/sppm_passes.h"
-#include "runtime/render/sppm_photon_grid.h"
+#include "runtime/render/sppm/sppm_passes.h"
+#include "runtime/render/sppm/sppm_photon_grid.h"
 #include "runtime/render/stage_times.h"
 
 namespace kdpm {

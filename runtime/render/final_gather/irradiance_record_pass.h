@@ -13,8 +13,8 @@
 #include <glm/vec3.hpp>
 
 #include "formats/host_device.h"
-#include "runtime/render/final_gather_pass.h"
-#include "runtime/render/irradiance_record.h"
+#include "runtime/render/final_gather/final_gather_pass.h"
+#include "runtime/render/final_gather/irradiance_record.h"
 #include "runtime/shading/constants.h"
 #include "runtime/shading/diffuse.h"
 

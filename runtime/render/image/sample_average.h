@@ -5,7 +5,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

@@ -14,7 +14,7 @@
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/tile_order.h"
-#include "runtime/render/trace_pass.h"
+#include "runtime/render/passes/trace_pass.h"
 #include "runtime/shading/surface_point.h"
 #include "runtime/shading/texture_lookup.h"
 

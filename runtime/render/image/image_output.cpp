@@ -1,4 +1,4 @@
-#include "runtime/render/image_output.h"
+#include "runtime/render/image/image_output.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +9,7 @@
 #include <system_error>
 
 #include "formats/output_file.h"
-#include "runtime/render/image_encoder.h"
+#include "runtime/render/image/image_encoder.h"
 
 namespace kdpm {
 
@@ -27,7 +27,7 @@ std::string lower_extension(const std::filesystem::path& p) {
 }
 
 // Encodes interleaved float channels into a finished private temporary beside `destination`
-// (formats/output_file.h, through runtime/render/image_encoder.h); the caller publishes it.
+// (formats/output_file.h, through runtime/render/image/image_encoder.h); the caller publishes it.
 std::unique_ptr<OutputTemp> encode_to_temporary(const std::filesystem::path& destination, int width, int height,
                                                 const std::vector<Channel>& channels, bool eight_bit) {
     const std::size_t pixels = static_cast<std::size_t>(width) * height;

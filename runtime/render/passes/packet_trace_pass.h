@@ -5,8 +5,8 @@
 // alone: the packet's rays and hits are the camera's and the single-ray walk's bit for bit.
 #include <cstdint>
 
-#include "runtime/render/camera_packet_pass.h"
-#include "runtime/render/trace_pass.h"
+#include "runtime/render/passes/camera_packet_pass.h"
+#include "runtime/render/passes/trace_pass.h"
 
 namespace kdpm {
 

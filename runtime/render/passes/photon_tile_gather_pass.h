@@ -16,7 +16,7 @@
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/photons/radius_hints.h"
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/photon_gather_pass.h"
+#include "runtime/render/passes/photon_gather_pass.h"
 #include "runtime/render/tile_order.h"
 
 namespace kdpm {

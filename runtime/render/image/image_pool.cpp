@@ -1,4 +1,4 @@
-#include "runtime/render/image_pool.h"
+#include "runtime/render/image/image_pool.h"
 
 #include <algorithm>
 #include <utility>

@@ -8,8 +8,8 @@
 #include <glm/vec3.hpp>
 
 #include "formats/host_device.h"
-#include "runtime/render/final_gather_pass.h"
-#include "runtime/render/irradiance_record_tree.h"
+#include "runtime/render/final_gather/final_gather_pass.h"
+#include "runtime/render/final_gather/irradiance_record_tree.h"
 
 namespace kdpm {
 

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <vector>
 
-#include "runtime/render/image.h"
+#include "runtime/render/image/image.h"
 
 namespace kdpm {
 

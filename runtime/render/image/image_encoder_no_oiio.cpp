@@ -1,7 +1,7 @@
 // encode_image in builds without OpenImageIO: kdpm's own .png and .pfm only.
 #include <stdexcept>
 
-#include "runtime/render/image_encoder.h"
+#include "runtime/render/image/image_encoder.h"
 
 namespace kdpm {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 #include "formats/format_error.h"
 #include "formats/metadata.h"
 #include "formats/section_ids.h"

@@ -3,8 +3,8 @@
 // test that needs a geometry file built in-process from its own triangles.
 #include <functional>
 
-#include "builders/geometry/kd_build_params.h"
-#include "builders/geometry/kd_tree.h"
+#include "builders/geometry/sah/kd_build_params.h"
+#include "builders/geometry/sah/kd_tree.h"
 #include "builders/geometry/scene.h"
 #include "formats/container_writer.h"
 

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "builders/geometry/isolated_import.h"
-#include "builders/geometry/texture_import.h"
+#include "builders/geometry/import/isolated_import.h"
+#include "builders/geometry/import/texture_import.h"
 #include "formats/camera_check.h"
 #include "formats/format_error.h"
 #include "formats/scene_limits.h"

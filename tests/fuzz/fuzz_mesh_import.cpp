@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "builders/geometry/isolated_import.h"
+#include "builders/geometry/import/isolated_import.h"
 #include "formats/format_error.h"
 
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 #include "tests/geometry/geometry_check.h"
 #include "tests/geometry/random_scenes.h"
 

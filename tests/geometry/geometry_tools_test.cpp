@@ -7,7 +7,7 @@
 #include <map>
 
 #include "builders/geometry/geometry_file_builder.h"
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 #include "formats/format_error.h"
 #include "runtime/geometry/geometry_file.h"
 #include "tests/geometry/random_scenes.h"

@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "builders/geometry/kd_tree.h"
-#include "builders/geometry/sah_cost.h"
+#include "builders/geometry/sah/kd_tree.h"
+#include "builders/geometry/sah/sah_cost.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm::test {

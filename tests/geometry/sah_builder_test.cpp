@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 #include "tests/geometry/random_scenes.h"
 #include "tests/geometry/reference_kd_builder.h"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "builders/geometry/scene_card.h"
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/import/scene_import.h"
 #include "formats/format_error.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"

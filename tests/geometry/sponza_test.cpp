@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <random>
 
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/import/scene_import.h"
 #include "tests/geometry/geometry_check.h"
 #include "tests/support/run_command.h"
 

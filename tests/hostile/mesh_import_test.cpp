@@ -10,8 +10,8 @@
 
 #include <string>
 
-#include "builders/geometry/isolated_import.h"
-#include "builders/geometry/mesh_nesting.h"
+#include "builders/geometry/import/isolated_import.h"
+#include "builders/geometry/import/mesh_nesting.h"
 #include "formats/format_error.h"
 #include "tests/hostile/hostile_files.h"
 #include "tests/support/temp_dir.h"

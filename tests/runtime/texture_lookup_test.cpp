@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "builders/geometry/texture_mips.h"
+#include "builders/geometry/import/texture_mips.h"
 #include "runtime/shading/texture_lookup.h"
 
 using namespace kdpm;

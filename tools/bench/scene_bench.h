@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "builders/geometry/kd_build_params.h"
+#include "builders/geometry/sah/kd_build_params.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/mode_frames.h"
 #include "tools/bench/photon_agreement.h"

@@ -2,7 +2,7 @@
 // The SAH cost options of the geometry build (--traversal-cost, --intersection-cost,
 // --empty-bonus), declared once for every tool that builds geometry kd-trees: the builder and
 // the benchmarks that time a build, or trace through one, for the costs a user picks.
-#include "builders/geometry/kd_build_params.h"
+#include "builders/geometry/sah/kd_build_params.h"
 #include "tools/cli/args.h"
 
 namespace kdpm::cli {

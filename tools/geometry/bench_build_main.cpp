@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 #include "builders/geometry/scene_card.h"
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"

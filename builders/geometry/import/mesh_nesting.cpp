@@ -1,4 +1,4 @@
-#include "builders/geometry/mesh_nesting.h"
+#include "builders/geometry/import/mesh_nesting.h"
 
 #include <rapidjson/document.h>
 

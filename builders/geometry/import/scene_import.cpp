@@ -1,4 +1,4 @@
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/import/scene_import.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/ObjMaterial.h>
@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "builders/geometry/large_stack.h"
-#include "builders/geometry/mesh_nesting.h"
+#include "builders/geometry/sah/large_stack.h"
+#include "builders/geometry/import/mesh_nesting.h"
 #include "formats/format_error.h"
 #include "formats/metadata.h"
 

@@ -1,4 +1,4 @@
-#include "builders/geometry/texture_mips.h"
+#include "builders/geometry/import/texture_mips.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Builds without OpenImageIO (scripts/gpu-bundle) read PPM textures only, with kdpm's own reader.
-#include "builders/geometry/texture_import.h"
-#include "builders/geometry/texture_ppm.h"
+#include "builders/geometry/import/texture_import.h"
+#include "builders/geometry/import/texture_ppm.h"
 
 namespace kdpm {
 

@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "builders/geometry/kd_build_params.h"
+#include "builders/geometry/sah/kd_build_params.h"
 #include "formats/kd_node.h"
 #include "formats/triangle_clip.h"
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <span>
 
-#include "builders/geometry/kd_build_params.h"
+#include "builders/geometry/sah/kd_build_params.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {

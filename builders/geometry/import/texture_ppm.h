@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "builders/geometry/texture_import.h"
+#include "builders/geometry/import/texture_import.h"
 
 namespace kdpm {
 

@@ -1,4 +1,4 @@
-#include "builders/geometry/binned_split.h"
+#include "builders/geometry/sah/binned_split.h"
 
 #include <algorithm>
 #include <array>
@@ -8,7 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "builders/geometry/sah_cost.h"
+#include "builders/geometry/sah/sah_cost.h"
 
 namespace kdpm {
 

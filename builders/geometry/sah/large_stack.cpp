@@ -1,4 +1,4 @@
-#include "builders/geometry/large_stack.h"
+#include "builders/geometry/sah/large_stack.h"
 
 #include <pthread.h>
 

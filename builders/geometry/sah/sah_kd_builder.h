@@ -10,8 +10,8 @@
 #include <functional>
 #include <span>
 
-#include "builders/geometry/kd_build_params.h"
-#include "builders/geometry/kd_tree.h"
+#include "builders/geometry/sah/kd_build_params.h"
+#include "builders/geometry/sah/kd_tree.h"
 #include "formats/geometry_layout.h"
 
 namespace kdpm {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <exception>
 
-#include "builders/geometry/texture_import.h"
+#include "builders/geometry/import/texture_import.h"
 #include "formats/oiio/oiio_plugin_loader.h"
 
 namespace kdpm {

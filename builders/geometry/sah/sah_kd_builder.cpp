@@ -1,4 +1,4 @@
-#include "builders/geometry/sah_kd_builder.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
 
 #include <algorithm>
 #include <array>
@@ -15,111 +15,19 @@
 #include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
-#include "builders/geometry/binned_split.h"
-#include "builders/geometry/sah_cost.h"
+#include "builders/geometry/sah/binned_split.h"
+#include "builders/geometry/sah/kd_tree_stats.h"
+#include "builders/geometry/sah/sah_events.h"
+#include "builders/geometry/sah/sah_cost.h"
 #include "formats/repeated_triangles.h"
 #include "formats/stable_radix_sort.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {
 
-KdDepthLimits KdDepthLimits::of(const KdBuildParams& params, std::uint64_t triangles) {
-    const std::uint32_t cap = kMaxKdTreeDepth - 4;
-    if (params.max_depth > 0) {
-        const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(params.max_depth), cap);
-        return {limit, limit, kSmallLeafTriangles};
-    }
-    const double log2_n = std::log2(static_cast<double>(std::max<std::uint64_t>(triangles, 1)));
-    const std::uint32_t limit = std::min<std::uint32_t>(static_cast<std::uint32_t>(std::lround(8.0 + 1.3 * log2_n)), cap);
-    const bool fast = params.quality == KdBuildQuality::fast;
-    const double small_base = fast ? 2.0 : 4.0;
-    const std::uint32_t small = static_cast<std::uint32_t>(std::lround(small_base + log2_n));
-    return {limit, std::min<std::uint32_t>(small, limit), fast ? kFastSmallLeafTriangles : kSmallLeafTriangles};
-}
-
-std::string_view quality_name(KdBuildQuality q) { return q == KdBuildQuality::fast ? "fast" : "high"; }
-
-std::optional<KdBuildQuality> parse_quality(std::string_view name) {
-    if (name == "high") return KdBuildQuality::high;
-    if (name == "fast") return KdBuildQuality::fast;
-    return std::nullopt;
-}
-
 namespace {
 
-// An event is a triangle's clipped bound on one axis: where it ends, lies (planar) or starts.
-// Ordered by position, then end < planar < start (the order the sweep needs), then triangle.
-enum EventType : std::uint32_t { kEnd = 0, kPlanar = 1, kStart = 2 };
-constexpr std::uint32_t kLocalMask = (1u << 30) - 1;
-
-// Positions as order-preserving integers, so that an event sorts with one 64-bit compare.
-// -0 is folded into +0 first, so equal positions have equal bits.
-inline std::uint32_t order_bits(float f) {
-    f += 0.0f;
-    std::uint32_t u;
-    std::memcpy(&u, &f, sizeof u);
-    return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
-}
-inline float from_order_bits(std::uint32_t o) {
-    const std::uint32_t u = (o & 0x80000000u) ? (o & 0x7fffffffu) : ~o;
-    float f;
-    std::memcpy(&f, &u, sizeof f);
-    return f;
-}
-
-struct Event {
-    std::uint64_t bits;  // order_bits(pos) << 32 | type << 30 | index of the triangle in the node's list
-    // Left uninitialised, also by std::vector's resize: every array of events is written in full
-    // before it is read (merges, radix passes), and zeroing each child's lists first was a tenth
-    // of split_node's samples (Sponza, perf).
-    Event() {}
-    explicit Event(std::uint64_t b) : bits(b) {}
-    static Event make(float pos, EventType type, std::uint32_t local) {
-        return Event{static_cast<std::uint64_t>(order_bits(pos)) << 32 | static_cast<std::uint64_t>(type) << 30 | local};
-    }
-    std::uint32_t pos_bits() const { return static_cast<std::uint32_t>(bits >> 32); }
-    float pos() const { return from_order_bits(pos_bits()); }
-    EventType type() const { return static_cast<EventType>((bits >> 30) & 3u); }
-    std::uint32_t local() const { return static_cast<std::uint32_t>(bits) & kLocalMask; }
-    Event with_local(std::uint32_t local) const { return Event{(bits & ~std::uint64_t{kLocalMask}) | local}; }
-};
-
-inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; }
-
-// Sorts one axis' events, which arrive in triangle (local) order: a stable sort by position and
-// type then orders them as operator< does. Radix passes pay off from about a thousand events;
-// the few fresh events of a small node sort fastest by insertion, up to about 64 (std::sort from
-// 16 on: builds 0.975-0.99x, one thread, Sponza and Conference room, five alternations).
-// Events are distinct (each names its triangle), so every sort gives the same order.
-void sort_events(std::vector<Event>& ev) {
-    if (ev.size() <= 64) {
-        Event* e = ev.data();
-        for (std::size_t i = 1; i < ev.size(); ++i) {
-            const Event x = e[i];
-            std::size_t j = i;
-            for (; j > 0 && x < e[j - 1]; --j) e[j] = e[j - 1];
-            e[j] = x;
-        }
-        return;
-    }
-    if (ev.size() < 1024) {
-        std::sort(ev.begin(), ev.end());
-        return;
-    }
-    static_assert(32 + 2 <= kRadixKeyBits, "position and type must fit the radix key");
-    stable_radix_sort(ev, [](const Event& e) { return e.bits >> 30; });
-}
-
-inline void add_events(const AxisBox& b, std::uint32_t local, std::vector<Event> (&ev)[3]) {
-    for (int a = 0; a < 3; ++a) {
-        if (b.lo[a] == b.hi[a]) {
-            ev[a].push_back(Event::make(b.lo[a], kPlanar, local));
-        } else {
-            ev[a].push_back(Event::make(b.lo[a], kStart, local));
-            ev[a].push_back(Event::make(b.hi[a], kEnd, local));
-        }
-    }
-}
+using namespace sah_detail;
 
 // A node is either exact (sorted events) or, in the upper levels of a fast build, binned (each
 // triangle's bounds clipped to the cell, no events).
@@ -160,36 +68,6 @@ struct Flat {
     std::vector<std::uint32_t> leaf;
     std::vector<float> area;            // box_area of each node's cell
     std::vector<std::uint32_t> depth;  // of each node
-};
-
-// The sums behind KdTreeStats, taken node by node in node order (depth first, below child
-// first): measure_kd_tree walks a finished tree, the builder reads the areas its pieces kept,
-// and both add the same doubles in the same order, so the cost has the same bits.
-class TreeStatsSum {
-public:
-    void inner(double area) { inner_area_ += area; }
-    void leaf(std::uint32_t count, double area, std::uint32_t depth) {
-        ++s_.leaves;
-        s_.leaf_references += count;
-        s_.max_leaf_triangles = std::max(s_.max_leaf_triangles, count);
-        if (count == 0) ++s_.empty_leaves;
-        else ++nonempty_;
-        s_.max_depth = std::max(s_.max_depth, depth);
-        leaf_area_weighted_ += area * count;
-    }
-    KdTreeStats finish(std::uint64_t nodes, const AxisBox& bounds, const KdBuildParams& params) {
-        s_.nodes = nodes;
-        const double root_area = box_area(bounds) > 0.0f ? box_area(bounds) : 1.0;
-        s_.mean_leaf_triangles =
-            nonempty_ ? static_cast<double>(s_.leaf_references) / static_cast<double>(nonempty_) : 0.0;
-        s_.sah_cost = (params.traversal_cost * inner_area_ + params.intersection_cost * leaf_area_weighted_) / root_area;
-        return s_;
-    }
-
-private:
-    KdTreeStats s_;
-    double inner_area_ = 0.0, leaf_area_weighted_ = 0.0;
-    std::uint64_t nonempty_ = 0;
 };
 
 // Large nodes are split into pieces whose subtrees are built in parallel; the choice depends on
@@ -727,41 +605,6 @@ private:
 KdTree build_sah_kd_tree(std::span<const TriangleRecord> triangles, const KdBuildParams& params,
                          const std::function<void(double)>& progress) {
     return Builder(triangles, params, progress).build();
-}
-
-KdTreeStats measure_kd_tree(std::span<const KdNode> nodes, const AxisBox& bounds, const KdBuildParams& params) {
-    if (nodes.empty()) return KdTreeStats{};
-    // Depth first, below child first: node order. The below child follows at once with the cell
-    // cut in place; only above children wait on the stack.
-    struct Entry {
-        std::uint32_t node, depth;
-        AxisBox cell;
-    };
-    std::vector<Entry> stack;
-    std::uint32_t node = 0, depth = 0;
-    AxisBox cell = bounds;
-    TreeStatsSum sum;
-    for (;;) {
-        const KdNode& n = nodes[node];
-        const double area = box_area(cell);
-        if (!n.is_leaf()) {
-            sum.inner(area);
-            Entry above{n.above_child(), depth + 1, cell};
-            above.cell.lo[n.axis()] = n.split();
-            stack.push_back(above);
-            cell.hi[n.axis()] = n.split();
-            ++node;
-            ++depth;
-            continue;
-        }
-        sum.leaf(n.count(), area, depth);
-        if (stack.empty()) break;
-        node = stack.back().node;
-        depth = stack.back().depth;
-        cell = stack.back().cell;
-        stack.pop_back();
-    }
-    return sum.finish(nodes.size(), bounds, params);
 }
 
 }  // namespace kdpm

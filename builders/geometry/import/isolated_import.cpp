@@ -1,4 +1,4 @@
-#include "builders/geometry/isolated_import.h"
+#include "builders/geometry/import/isolated_import.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "builders/geometry/mesh_nesting.h"
-#include "builders/geometry/scene_import.h"
+#include "builders/geometry/import/mesh_nesting.h"
+#include "builders/geometry/import/scene_import.h"
 #include "formats/format_error.h"
 
 namespace kdpm {

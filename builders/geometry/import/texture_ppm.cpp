@@ -1,4 +1,4 @@
-#include "builders/geometry/texture_ppm.h"
+#include "builders/geometry/import/texture_ppm.h"
 
 #include <cctype>
 #include <fstream>

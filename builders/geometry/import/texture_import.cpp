@@ -1,9 +1,9 @@
-#include "builders/geometry/texture_import.h"
+#include "builders/geometry/import/texture_import.h"
 
 #include <cmath>
 #include <map>
 
-#include "builders/geometry/texture_mips.h"
+#include "builders/geometry/import/texture_mips.h"
 
 namespace kdpm {
 

@@ -3,7 +3,7 @@
 // builder in the tests so that both rank candidates with the very same arithmetic.
 #include <cstdint>
 
-#include "builders/geometry/kd_build_params.h"
+#include "builders/geometry/sah/kd_build_params.h"
 #include "formats/triangle_clip.h"
 
 namespace kdpm {

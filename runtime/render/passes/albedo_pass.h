@@ -14,7 +14,7 @@
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/tile_order.h"
-#include "runtime/render/passes/trace_pass.h"
+#include "runtime/render/passes/camera_path_vertex.h"
 #include "runtime/shading/surface_point.h"
 #include "runtime/shading/texture_lookup.h"
 
@@ -30,12 +30,9 @@ struct AlbedoPass {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
         const auto x = static_cast<std::uint32_t>(pixel % frame.width), y = static_cast<std::uint32_t>(pixel / frame.width);
         const CameraRay cam = camera.ray(x, y, sample);
-        const Ray ray{cam.origin, 0.0f, cam.direction, std::numeric_limits<float>::infinity()};
-        const Hit hit = closest_hit(geometry, ray);
-        write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit);
-        if (!hit.found()) return;
-        const MaterialRecord m =
-            material_of(geometry, hit, uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()));
+        PathVertex at;
+        if (!camera_path_vertex(geometry, camera, frame, sample, pixel, 0, cam.origin, cam.direction, at)) return;
+        const MaterialRecord& m = at.material;
         const auto kind = static_cast<MaterialKind>(m.kind);
         frame.accum[pixel] += kind == MaterialKind::mirror  ? to_vec3(m.specular)
                               : kind == MaterialKind::glass ? to_vec3(m.transmission)

@@ -17,6 +17,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/render/camera.h"
+#include "runtime/render/passes/camera_path_vertex.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/tile_order.h"
 #include "runtime/render/passes/trace_pass.h"
@@ -61,14 +62,10 @@ struct PathPass {
         std::uint32_t run_depth = 0;    // rays since the camera or the last diffuse vertex
         std::uint32_t diffuse = 0;
         for (std::uint32_t vertex = 0; vertex < kMaxVertices; ++vertex) {
-            const Ray ray{origin, 0.0f, direction, std::numeric_limits<float>::infinity()};
-            const Hit hit = closest_hit(geometry, ray);
-            if (vertex == 0) write_first_hit_aovs(geometry, frame, sample, pixel, ray, hit);
-            if (!hit.found()) break;
-            const SurfacePoint s = surface_at(geometry, ray, hit);
-            // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
-            const float footprint = vertex == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
-            const MaterialRecord m = material_of(geometry, hit, footprint);
+            PathVertex at;
+            if (!camera_path_vertex(geometry, camera, frame, sample, pixel, vertex, origin, direction, at)) break;
+            const SurfacePoint& s = at.surface;
+            const MaterialRecord& m = at.material;
             if (count_emission && s.front) radiance += throughput * to_vec3(m.emission);
             const RandomStream random{random_seed::path, path, vertex};
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);

@@ -20,6 +20,7 @@
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/render/camera.h"
+#include "runtime/render/passes/camera_path_vertex.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/sppm/sppm_photon_grid.h"
 #include "runtime/render/tile_order.h"
@@ -78,14 +79,10 @@ struct SppmVisiblePass {
         glm::vec3 origin = cam.origin, direction = cam.direction;
         glm::vec3 throughput(1.0f), radiance(0.0f);
         for (std::uint32_t vertex = 0; vertex < max_depth; ++vertex) {
-            const Ray ray{origin, 0.0f, direction, std::numeric_limits<float>::infinity()};
-            const Hit hit = closest_hit(geometry, ray);
-            if (vertex == 0) write_first_hit_aovs(geometry, frame, pass, pixel, ray, hit);
-            if (!hit.found()) break;
-            const SurfacePoint s = surface_at(geometry, ray, hit);
-            // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
-            const float footprint = vertex == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
-            const MaterialRecord m = material_of(geometry, hit, footprint);
+            PathVertex at;
+            if (!camera_path_vertex(geometry, camera, frame, pass, pixel, vertex, origin, direction, at)) break;
+            const SurfacePoint& s = at.surface;
+            const MaterialRecord& m = at.material;
             if (s.front) radiance += throughput * to_vec3(m.emission);
             const glm::vec3 above = offset_origin(s.position, s.geometric_normal, epsilon, true);
             if (is_specular(m)) {

@@ -50,8 +50,8 @@ void load(Archive& ar, Metadata& m) {
 std::string metadata_to_json(const Metadata& m) {
     // RapidJSON's pretty writer straight into a string buffer, as cereal's JSON archive would set
     // it up (4-space indent, its default precision), so the text is the same byte for byte: the
-    // archive feeds an std::ostream a character at a time, and was a fifth of building the Cornell
-    // box's whole .kdg (callgrind).
+    // archive feeds an std::ostream a character at a time, which costs a large share of building
+    // a small scene's .kdg.
     rapidjson::StringBuffer buffer;
     rapidjson::PrettyWriter<rapidjson::StringBuffer> w(buffer);
     w.SetIndent(' ', 4);
@@ -144,8 +144,8 @@ Metadata metadata_from_json(std::string_view json) {
 std::string hash_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FormatError("cannot read '" + path + "'");
-    // Read in large blocks: an istreambuf_iterator costs about 13 instructions a byte, as much as
-    // shooting 20,000 photons into Sponza when the .kdg is hashed for the photon file's metadata.
+    // Read in large blocks: an istreambuf_iterator costs several instructions a byte, which adds up
+    // when a large .kdg is hashed for the photon file's metadata.
     // A regular file comes in one read (its size and one byte more, to meet the end).
     std::error_code size_error;
     const auto size = std::filesystem::file_size(path, size_error);

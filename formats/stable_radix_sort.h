@@ -2,8 +2,8 @@
 // A stable LSD radix sort by a key of at most 36 bits, in three passes of up to 12-bit digits.
 // The geometry builder sorts a node's split events by position and type (34 bits) while they
 // already arrive in triangle order: stability then yields exactly what std::sort by the whole
-// event gives, in a few linear passes instead of n log n compares (the root's sort was half of
-// the serial start of a build). The CPU photon shooter orders each wave of rays by a 30-bit
+// event gives, in a few linear passes instead of n log n compares, which shortens the serial
+// start of a build (the root's sort). The CPU photon shooter orders each wave of rays by a 30-bit
 // key of origin and direction, ties in path order.
 #include <cstddef>
 #include <cstdint>

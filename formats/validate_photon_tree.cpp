@@ -166,7 +166,7 @@ void validate_irradiance(const ContainerReader& file) {
         fail("photon positions do not match the photon counts");
     std::vector<bool> used(global.photon_count, false);
     for (std::uint64_t i = 0; i < n; ++i) {
-        // Spelled only for a message: building it for every photon was a fifth of a load.
+        // Spelled only for a message: building it for every photon would slow a load noticeably.
         auto which = [i] { return "photon " + std::to_string(i); };
         for (float c : irradiance[i].rgb)
             if (!std::isfinite(c) || c < 0.0f) fail(which() + " has a non-finite or negative irradiance");

@@ -105,7 +105,7 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     w.add(section::geo_materials, ElementType::record, scene->materials);
     w.add(section::geo_lights, ElementType::record, scene->lights);
     w.add_record(section::geo_camera, scene->camera);
-    // Texture coordinates only matter to a textured material; untextured scenes stay as before.
+    // Texture coordinates only matter to a textured material, so untextured scenes carry none.
     if (!scene->textures.empty()) {
         w.add(section::geo_uvs, ElementType::record, scene->uvs);
         w.add(section::geo_textures, ElementType::record, scene->textures);

@@ -11,10 +11,8 @@
 namespace kdpm::photon_build {
 
 struct VvhCosts {
-    // Measured on the frame's gather (Sponza, Conference room, Cornell box; k = 2, 32, 256): an
-    // inner node step with its stack push and pop costs many photon distance tests now that a
-    // leaf is scanned 16 photons at a time; 16 (with leaves of up to 64) gave the fastest
-    // gathers, where 6 (and 16-photon leaves) had before that scan.
+    // An inner node step with its stack push and pop costs many photon distance tests because a
+    // leaf is scanned 16 photons at a time; 16 (with leaves of up to 64) gives the fastest gathers.
     float traverse = 16.0f;
     float photon = 1.0f;    // one photon distance test
 };

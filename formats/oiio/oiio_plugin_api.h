@@ -1,8 +1,8 @@
 #pragma once
 // What kdpm asks of OpenImageIO, behind one shared module (kdpm-oiio.so) that the tools load only
 // when they meet an image format kdpm does not encode or decode itself: OpenImageIO pulls in
-// about 250 shared libraries (OpenCV, FFmpeg, OpenVDB, ...), whose loading took half a second at
-// the start of every process that linked it. Plain data across the boundary; the caller keeps
+// about 250 shared libraries (OpenCV, FFmpeg, OpenVDB, ...), whose loading delays the start of
+// every process that links it. Plain data across the boundary; the caller keeps
 // its own output discipline (the module never publishes a file).
 #include <cstdint>
 #include <string>

@@ -18,8 +18,8 @@ CudaDeviceStatus cuda_device_status();
 void use_cuda_device(int index);
 
 // Creates the CUDA context on the current device now (it is otherwise made by the first CUDA
-// call, ~0.1 s) and returns the milliseconds it took, so that tools can time their work without
-// it. Throws std::runtime_error (one line) where it fails, or without a device.
+// call, which it slows) and returns the milliseconds it took, so that tools can time their
+// work without it. Throws std::runtime_error (one line) where it fails, or without a device.
 double start_cuda_device();
 
 }  // namespace kdpm

@@ -1,7 +1,7 @@
 #pragma once
 // Host memory kept from one frame for the next (CpuDevice arrays of a frame backend). A frame
 // asks for the same large arrays every time, and fresh ones are fresh pages: the kernel maps and
-// zeroes each 4 KiB page at its first touch, about a fifth of the Sponza's trace pass at 512x512.
+// zeroes each 4 KiB page at its first touch, which costs a large share of a frame's trace pass.
 // Blocks given back are handed out again (the smallest that fits, if at most twice the size
 // asked for); trim() frees those that a frame did not take again, so what is kept never exceeds
 // one frame's arrays.

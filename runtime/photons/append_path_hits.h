@@ -1,9 +1,9 @@
 #pragma once
 // The last step of a depth-first shooting batch (CUDA, and the bench's Embree peer): its paths'
 // stored hits, each path's in its own fixed slots, appended to the shot's hits in path order.
-// Host code, on oneTBB's workers. Pushed back one at a time on one thread, this step took about
-// 17 ms per two-thread Sponza shot; now about 13, of which 10 are the first touches of the shot's
-// fresh pages in the resize (serial: std::vector zero-fills) and 3 the copy.
+// Host code, on oneTBB's workers, because pushed back one at a time on one thread this step holds
+// up the shot. The resize's first touches of the shot's fresh pages stay serial (std::vector
+// zero-fills).
 #include <cstdint>
 #include <vector>
 

@@ -3,9 +3,9 @@
 // depends on the photon and on the query's normal and filter settings only, and neighbouring
 // pixels on one face share the normal bit for bit and examine mostly the same photons: the
 // decision of a photon seen again is read back. Where the normal changes from pixel to pixel
-// (smooth shading: about half of the Sponza's neighbours), the decisions start over but the
-// photon's two unfolded octahedral vectors, which depend on the photon only, are read back
-// instead of decoded again. The same decisions, so the same photons are found.
+// (smooth shading), the decisions start over but the photon's two unfolded octahedral vectors,
+// which depend on the photon only, are read back instead of decoded again. The same decisions,
+// so the same photons are found.
 #include <cstdint>
 #include <cstring>
 

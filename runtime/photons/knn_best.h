@@ -2,9 +2,9 @@
 // The k best photons a k-nearest search has kept so far: unordered slots plus the largest
 // distance of each block of 8 slots. Replacing the farthest rewrites one slot and finds the new
 // farthest from one block's 8 distances and the k/8 block maxima, with one data-dependent
-// branch (which group of four holds it); a binary max-heap's sift-down took about 100
-// instructions and mispredicted branches per replacement, a third of a k = 32 search. On x86
-// the maxima are SSE2 lanes; elsewhere (CUDA, other CPUs) the same steps are scalar loops. The
+// branch (which group of four holds it), because a binary max-heap's sift-down costs many
+// instructions and mispredicted branches per replacement. On x86 the maxima are SSE2 lanes;
+// elsewhere (CUDA, other CPUs) the same steps are scalar loops. The
 // slots chosen, and so the order a caller sums them in, are the same on every backend.
 #include <cstdint>
 
@@ -127,8 +127,8 @@ public:
 #if KDPM_KNN_SSE2
         // The slot and its block's maximum rewritten as whole vectors, from registers: the
         // vector loads that follow (this block's maximum, find_farthest's scans) cannot take a
-        // single float just stored from the store buffer, and waited for it to reach the cache on
-        // every replacement (photon gather stage, k = 32: 0.97-0.98x the time).
+        // single float just stored from the store buffer, and would wait for it to reach the cache
+        // on every replacement.
         float* block = d2_ + b * KnnHeap::kBlock;
         const __m128i slot = _mm_set1_epi32(static_cast<int>(worst_ % KnnHeap::kBlock));
         const __m128 value = _mm_set1_ps(d2);
@@ -168,9 +168,9 @@ public:
 
 private:
     // Once a search, when the k-th photon is kept: the padding and the block maxima. Out of line
-    // on the CPU: inlined, the compiler set up this loop's bounds and pointers again before every
-    // 16-photon chunk that had a photon to keep, about 70 instructions each time (photon gather,
-    // Sponza, k = 32: 0.92x the time out of line, the same photons and images bit for bit).
+    // on the CPU because, inlined, the compiler sets up this loop's bounds and pointers again
+    // before every 16-photon chunk that has a photon to keep; the photons and images are the same
+    // bit for bit either way.
 #if !defined(__CUDA_ARCH__) && (defined(__GNUC__) || defined(__clang__))
     __attribute__((noinline, cold))
 #endif

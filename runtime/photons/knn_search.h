@@ -178,7 +178,7 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
                 knn_detail::leaf_distances(map.x + base, map.y + base, map.z + base, m, q, dist, d2);
             if constexpr (AcceptsSixteen<Accept>) {
                 // Only the photons inside the radius and accepted, found from two bit masks:
-                // about half of those inside fail a surface filter, and a branch per photon on
+                // many of those inside fail a surface filter, and a branch per photon on
                 // "inside and accepted" mispredicts often. Still in leaf order.
                 if (batched && whole) {
                     std::uint32_t todo = acc.accepted16(base) & knn_detail::closer_than(d2, max_d2) &
@@ -196,7 +196,7 @@ KDPM_HD std::uint32_t knn_search(const PhotonMapView& map, glm::vec3 q, std::uin
 #endif
         // Next subtree whose cell is still closer than the current radius and that may hold an
         // accepted photon. Asked of popped subtrees only: on the way down, a test per node or per
-        // leaf cost more than it saved (Sponza frame, timed).
+        // leaf costs more than it saves.
         for (;;) {
             if (top == 0) return best.finish();
             --top;

@@ -2,9 +2,9 @@
 // Per photon-tree node, the box of its photons' decoded directions and of their surface normals,
 // and what their flags share (PhotonMapView::vector_bounds). A surface filter that no vector in a
 // box can pass, or whose bounce and flag rules every photon fails, rules out every photon below
-// that node at once: at corners and thin walls about half the leaves a Sponza k-nearest search
-// reaches hold no photon its filter accepts (a fifth to a half on the shared scenes), and a
-// subtree ruled out is not walked. Computed from PhotonMapView::unpacked, once per renderer.
+// that node at once: at corners and thin walls many of the leaves a k-nearest search reaches
+// hold no photon its filter accepts, and a subtree ruled out is not walked. Computed from
+// PhotonMapView::unpacked, once per renderer.
 #include <cstdint>
 #include <vector>
 

@@ -71,9 +71,8 @@ std::uint64_t shoot_paths(Device& dev, const GeometryView& geometry, const Light
         const std::uint64_t done = first + n - first_path;  // paths once this batch is traced
         // Room for this batch's photons and, at the rate stored so far, for the batches to come (at
         // least a quarter more than now), so that the hits are not copied again at every doubling.
-        // The estimate has 1/32 to spare: batches' rates differ by tenths of a percent, and a last
-        // batch that overran it copied all the hits once more (Conference room, Cornell box: 20 of
-        // 145 ms of a two-thread shot went to sizing the hits, against 10 on Sponza).
+        // The estimate has 1/32 to spare, more than batches' rates differ, because a last batch
+        // that overruns it copies all the hits once more.
         const auto reserve = [&](std::uint64_t batch_stored) {
             const std::uint64_t needed = hits.size() + batch_stored;
             if (hits.capacity() >= needed) return;

@@ -30,15 +30,13 @@ void summarize_shot(const GeometryView& g, const ShootOptions& options, ShotPhot
 
 // CPU batches: 64 Ki paths, or fewer when their room for max_bounces + 1 photons a path would pass
 // 256 MiB. Larger batches would sort more rays together, but their fresh pages cost more than that
-// gains (two threads, 256 Ki paths: Sponza 211 against 187 ms in waves with per-path slots; with
-// photons placed straight into the shot, no faster, and the depth-first order slower).
+// gains.
 inline std::uint64_t cpu_shoot_batch_size(std::uint32_t max_bounces) {
     return shoot_batch_size(max_bounces, 1u << 16, 256u << 20);
 }
 
-// kdpm shoots in sorted waves (two threads, 64K batches: 0.79x the time of depth first on Sponza,
-// 0.81x on the Conference room, 0.90x on the Cornell box); a peer passes the order that is
-// fastest for its intersector.
+// kdpm shoots in sorted waves because they trace faster than depth first with its kd-tree; a peer
+// passes the order that is fastest for its intersector.
 template <class ClosestHit = KdTreeClosestHit>
 ShotPhotons shoot_photons_on_cpu(const GeometryView& g, const ShootOptions& options, const ClosestHit& intersect = {},
                                  const std::function<void(double)>& progress = {},

@@ -38,7 +38,7 @@ struct FrameBuffersView {
     // Where a pixel's vertex i (< kMaxDiffuseVertices) lives in vertices and gathered: all first
     // vertices, then all second ones, and so on. Nearly every pixel has just a first vertex, and
     // neighbouring pixels' then share cache lines; with a pixel's slots together, each pixel's
-    // first vertex was a cache miss of its own (a third of the CPU trace pass went to them).
+    // first vertex would be a cache miss of its own.
     KDPM_HD std::uint64_t vertex_slot(std::uint64_t pixel, std::uint32_t i) const {
         return static_cast<std::uint64_t>(i) * pixel_count() + pixel;
     }

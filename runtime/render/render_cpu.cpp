@@ -34,10 +34,9 @@ public:
 
 private:
     // The photon maps' vectors and powers decoded, and each tree node's boxes of those vectors,
-    // for every gather of this renderer (the first frame that gathers pays for it: a few
-    // milliseconds for the shared scenes' half a million photons). Where 36 bytes a photon and 64
-    // a node would take more than a quarter of the memory left, the gather decodes per use
-    // instead: the same decisions and sums, slower.
+    // for every gather of this renderer (the first frame that gathers pays for it, once). Where
+    // 36 bytes a photon and 64 a node would take more than a quarter of the memory left, the
+    // gather decodes per use instead: the same decisions and sums, slower.
     void unpack_once() {
         if (unpacked_) return;
         unpacked_ = true;

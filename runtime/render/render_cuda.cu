@@ -22,8 +22,8 @@ class CudaFrameBackend final : public FrameBackend {
 public:
     explicit CudaFrameBackend(const SceneViews& scene) {
         // The current device (0 unless use_cuda_device chose another); a broken driver or a
-        // device in use by another exclusive process fails here, with one line. Timed apart:
-        // the context costs about 0.1 s, whatever the scene.
+        // device in use by another exclusive process fails here, with one line. Timed apart,
+        // as the context's cost does not depend on the scene.
         device_start_ms_ = start_cuda_device();
         StopWatch watch;
         device_geometry_ = upload_geometry(owned_, scene.geometry);

@@ -24,7 +24,7 @@ KDPM_HD KDPM_INLINE void tangent_frame(const glm::vec3& n, glm::vec3& t, glm::ve
 // it and a photon map's density is flux per geometric area, so the path tracer and the gather
 // rays sample about it too and all modes solve the same equation; shading normals shade direct
 // light and estimates. (Bouncing about a tilted shading normal and ending the rays it sends into
-// the surface left SPPM 5.7 % brighter than the reference path tracer on the Sponza.)
+// the surface leaves SPPM brighter than the reference path tracer.)
 // Direction about the unit normal n with density cos(theta) / pi (Malley: a uniform disc lifted).
 KDPM_HD KDPM_INLINE glm::vec3 cosine_direction(const glm::vec3& n, float u1, float u2) {
     const float r = sqrtf(u1);

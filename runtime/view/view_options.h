@@ -46,7 +46,7 @@ struct ViewOptions {
 
 // The AOVs a frame needs for view v: depth or normals for those views, hit points and normals
 // for the photon density (searched at each pixel's hit), none for the shaded image. The viewer
-// renders only these: the two AOVs cost the Sponza's shaded frame about 5 % (trace, copies and
+// renders only these, because the two AOVs add to a shaded frame's cost (trace, copies and
 // composition), and switching views renders anew only when the needs differ.
 AovSet aovs_for_view(ViewKind v);
 // Whether switching views needs a new frame, not just a new composition of the last one: the

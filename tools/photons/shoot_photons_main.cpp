@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
         const BackendSelection selected = select_backend(backend);
         if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-shoot-photons: " << selected.notice << "\n";
         options.backend = selected.kind;
-        // The CUDA context is made before the clock starts: its ~0.1 s is the process's, not the shot's.
+        // The CUDA context is made before the clock starts: its start-up is the process's, not the shot's.
         const double device_start_ms = selected.kind == BackendKind::cuda ? start_cuda_device() : 0.0;
 
         auto start = std::chrono::steady_clock::now();

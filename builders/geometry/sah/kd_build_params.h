@@ -36,10 +36,9 @@ inline constexpr std::uint32_t kFastSmallLeafTriangles = 32;
 
 // The depth limits a build of `triangles` triangles uses. Automatically, 8 + 1.3 log2(triangles)
 // for every node, and 4 + log2(triangles) for nodes of at most kSmallLeafTriangles: below it the
-// sweep still finds splits it rates cheaper, but the trees traced no faster with them (Sponza,
-// Conference room: primary rays and photon shooting 0.97-1.00x the time with a third to a quarter
-// of the nodes; README). A fast build stops two levels sooner, 2 + log2(triangles), for nodes of
-// at most kFastSmallLeafTriangles: half the nodes again for 2-4% more SAH cost (README). An
+// sweep still finds splits it rates cheaper, but trees with them trace no faster and have many
+// more nodes (README). A fast build stops two levels sooner, 2 + log2(triangles), for nodes of
+// at most kFastSmallLeafTriangles: fewer nodes again for a little more SAH cost (README). An
 // explicit max_depth is a plain limit for every node.
 struct KdDepthLimits {
     std::uint32_t max_depth;        // no node at this depth (or deeper) is split

@@ -34,8 +34,8 @@ inline float from_order_bits(std::uint32_t o) {
 struct Event {
     std::uint64_t bits;  // order_bits(pos) << 32 | type << 30 | index of the triangle in the node's list
     // Left uninitialised, also by std::vector's resize: every array of events is written in full
-    // before it is read (merges, radix passes), and zeroing each child's lists first was a tenth
-    // of split_node's samples (Sponza, perf).
+    // before it is read (merges, radix passes), and zeroing each child's lists first would take a
+    // large share of split_node's time.
     Event() {}
     explicit Event(std::uint64_t b) : bits(b) {}
     static Event make(float pos, EventType type, std::uint32_t local) {
@@ -52,8 +52,7 @@ inline bool operator<(const Event& a, const Event& b) { return a.bits < b.bits; 
 
 // Sorts one axis' events, which arrive in triangle (local) order: a stable sort by position and
 // type then orders them as operator< does. Radix passes pay off from about a thousand events;
-// the few fresh events of a small node sort fastest by insertion, up to about 64 (std::sort from
-// 16 on: builds 0.975-0.99x, one thread, Sponza and Conference room, five alternations).
+// the few events of a small node, up to 64, sort fastest by insertion.
 // Events are distinct (each names its triangle), so every sort gives the same order.
 inline void sort_events(std::vector<Event>& ev) {
     if (ev.size() <= 64) {

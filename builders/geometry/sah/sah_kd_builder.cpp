@@ -116,7 +116,7 @@ private:
     // Three passes over the triangles, the first two on all threads: their keys and the cell
     // together, then each clipped to the cell while one thread files the keys. Copies do not
     // change the cell (each equals a triangle the tree takes), so neither waits for the filing;
-    // one thread's passes over the triangles were 7% of a fast Sponza build at two threads.
+    // the first two run on all threads because on one they would hold up a fast build.
     AxisBox start_root(NodeInput& root, std::size_t& taken, std::uint64_t& repeated_count) const {
         const std::size_t count = tris_.size();
         std::vector<std::uint64_t> keys(count);
@@ -277,9 +277,9 @@ private:
             while (i < m) {
                 const std::uint32_t pb = e[i].pos_bits();
                 // The group's events counted by type in one loop: its only branch is where the
-                // position changes (three loops, one per type, mispredicted at each type change).
+                // position changes (three loops, one per type, would mispredict at each change).
                 // Ends and planars in the two halves of one register; an array of counts in
-                // memory made every event wait for the store of the one before.
+                // memory would make every event wait for the store of the one before.
                 static constexpr std::uint64_t kIncrement[3] = {1, std::uint64_t{1} << 32, 0};  // by EventType
                 const std::size_t group = i;
                 std::uint64_t ends_planar = 0;
@@ -481,9 +481,8 @@ private:
     }
 
     // A subtree on one thread, depth first. The children's inputs are this thread's arrays for
-    // their depth, reused from node to node: fresh ones for every node made malloc and free about
-    // 5% of the Conference room's build (one thread, perf), and reusing them takes 0.88-0.95x the
-    // time (one thread, three alternations); the trees are byte-identical.
+    // their depth, reused from node to node because fresh ones for every node spend the build's
+    // time in malloc and free; the trees are byte-identical.
     void build_flat(NodeInput& in, std::uint32_t depth, Flat& out) {
         const Split s = find_split(in, depth);
         if (s.axis < 0) {
@@ -547,8 +546,8 @@ private:
     }
 
     // measure_kd_tree's statistics from the areas and depths the pieces kept: the same sums in the
-    // same (node) order, so the same bits, without walking the tree again on one thread (2% of a
-    // fast Sponza build at two threads). The tests hold the two equal.
+    // same (node) order, so the same bits, without walking the tree again on one thread, which
+    // would hold up a fast build. The tests hold the two equal.
     KdTreeStats statistics(const Piece& root, std::size_t node_count, const AxisBox& bounds) const {
         if (node_count == 0) return KdTreeStats{};
         TreeStatsSum sum;

@@ -1,8 +1,8 @@
 #pragma once
 // Image storage kept from finished frames for the next ones. A 512x512 frame's linear, exposed
 // and display images are 3 MiB each, and fresh ones are fresh pages the kernel maps and zeroes
-// at first touch: about 4 ms of the viewer's 150 ms frame (Sponza, two threads). A caller done
-// with a frame gives its images back (Renderer::recycle); the next frame takes them.
+// at first touch, which costs a noticeable share of a viewer frame. A caller done with a frame
+// gives its images back (Renderer::recycle); the next frame takes them.
 #include <cstddef>
 #include <mutex>
 #include <vector>

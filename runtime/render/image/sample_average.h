@@ -1,6 +1,6 @@
 #pragma once
-// A frame's linear image from its per-pixel sums of samples, on the host's threads (one thread
-// took 2 ms of a 512x512 frame).
+// A frame's linear image from its per-pixel sums of samples, on the host's threads because on
+// one thread it takes a noticeable share of a frame.
 #include <cstdint>
 
 #include <glm/vec3.hpp>

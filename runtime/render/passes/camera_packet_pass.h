@@ -1,7 +1,7 @@
 #pragma once
 // The closest hit of every camera ray of a frame sample, traced as 16-ray packets of 4x4 pixels
-// (kd_packet_traversal.h), a third to a half of the time of one ray at a time on the shipped and
-// shared scenes; the hits are the single-ray walk's bit for bit. The CPU backend's trace pass
+// (kd_packet_traversal.h), since a packet reads each node once and tests several rays per
+// instruction; the hits are the single-ray walk's bit for bit. The CPU backend's trace pass
 // starts each pixel from its packet's hit (PacketTracePass); this pass stores them per pixel.
 #include <cstdint>
 #include <limits>

@@ -69,7 +69,7 @@ struct TracePass {
         glm::vec3 emitted(0.0f);
         std::uint32_t count = 0;
         // The camera ray first, held in registers: pushed and popped at once, its 16-byte reload
-        // straddled two 8-byte stores, which the CPU cannot forward (a third of this pass).
+        // would straddle two 8-byte stores, which the CPU cannot forward.
         Pending r{cam.origin, cam.direction, glm::vec3(1.0f), 0u};
         for (bool first = true;; first = false) {
             if (!first) {

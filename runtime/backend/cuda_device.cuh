@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "runtime/backend/cuda_check.h"
-#include "runtime/backend/device_concept.h"
 #include "runtime/backend/cuda_parallel_for.cuh"
 #include "runtime/backend/device_buffer.h"
+#include "runtime/backend/device_concept.h"
 
 namespace kdpm {
 

@@ -4,8 +4,8 @@
 #include "runtime/photons/unpacked_directions.h"
 #include "runtime/render/frame_backend.h"
 #include "runtime/render/frame_memory.h"
-#include "runtime/shading/light_power_table.h"
 #include "runtime/render/passes/photon_density_pass.h"
+#include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
 

@@ -11,8 +11,8 @@
 #include "runtime/backend/cuda_device.h"
 #include "runtime/backend/device_scene_upload.cuh"
 #include "runtime/render/frame_backend.h"
-#include "runtime/shading/light_power_table.h"
 #include "runtime/render/passes/photon_density_pass.h"
+#include "runtime/shading/light_power_table.h"
 
 namespace kdpm {
 

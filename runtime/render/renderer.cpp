@@ -10,11 +10,11 @@
 
 #include "formats/scene_limits.h"
 #include "runtime/render/frame_backend.h"
-#include "runtime/render/image/image_pool.h"
-#include "runtime/render/image_size.h"
-#include "runtime/render/image/post_process.h"
-#include "runtime/shading/ray_offset.h"
 #include "runtime/render/frame_memory.h"
+#include "runtime/render/image/image_pool.h"
+#include "runtime/render/image/post_process.h"
+#include "runtime/render/image_size.h"
+#include "runtime/shading/ray_offset.h"
 
 namespace kdpm {
 

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <fstream>
 
-#include "builders/geometry/scene_card.h"
 #include "builders/geometry/import/scene_import.h"
+#include "builders/geometry/scene_card.h"
 #include "formats/format_error.h"
 #include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"

@@ -14,9 +14,9 @@
 #include "runtime/render/final_gather/irradiance_record_tree.h"
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"
-#include "tests/runtime/in_memory_photons.h"
 #include "tests/runtime/cornell_box_runs.h"
 #include "tests/runtime/image_stats.h"
+#include "tests/runtime/in_memory_photons.h"
 #include "tests/support/run_command.h"
 
 using namespace kdpm;

@@ -10,10 +10,10 @@
 #include <functional>
 
 #include "builders/geometry/geometry_file_builder.h"
-#include "builders/geometry/sah/sah_kd_builder.h"
-#include "builders/geometry/scene_card.h"
 #include "builders/geometry/import/texture_import.h"
 #include "builders/geometry/import/texture_ppm.h"
+#include "builders/geometry/sah/sah_kd_builder.h"
+#include "builders/geometry/scene_card.h"
 #include "formats/format_error.h"
 #include "formats/section_ids.h"
 #include "runtime/geometry/geometry_file.h"

@@ -17,8 +17,8 @@
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/cli/args.h"
-#include "tools/cli/render_options.h"
 #include "tools/cli/progress.h"
+#include "tools/cli/render_options.h"
 #include "tools/cli/run_tool.h"
 
 using namespace kdpm;

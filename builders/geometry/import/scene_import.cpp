@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "builders/geometry/sah/large_stack.h"
 #include "builders/geometry/import/mesh_nesting.h"
+#include "builders/geometry/sah/large_stack.h"
 #include "formats/format_error.h"
 #include "formats/metadata.h"
 

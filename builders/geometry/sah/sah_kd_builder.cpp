@@ -17,8 +17,8 @@
 
 #include "builders/geometry/sah/binned_split.h"
 #include "builders/geometry/sah/kd_tree_stats.h"
-#include "builders/geometry/sah/sah_events.h"
 #include "builders/geometry/sah/sah_cost.h"
+#include "builders/geometry/sah/sah_events.h"
 #include "formats/repeated_triangles.h"
 #include "formats/stable_radix_sort.h"
 #include "formats/triangle_clip.h"

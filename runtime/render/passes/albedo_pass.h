@@ -13,8 +13,8 @@
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
-#include "runtime/render/tile_order.h"
 #include "runtime/render/passes/camera_path_vertex.h"
+#include "runtime/render/tile_order.h"
 #include "runtime/shading/surface_point.h"
 #include "runtime/shading/texture_lookup.h"
 

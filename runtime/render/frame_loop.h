@@ -41,6 +41,7 @@ struct FramePlan {
     float cache_min_radius = 0.0f, cache_max_radius = 1e30f;  // clamp of the records' R_i (scene units)
     IrradianceCache* kept_cache = nullptr;  // records from earlier frames to use and extend; null: a new cache
 
+    std::uint64_t pixels() const { return static_cast<std::uint64_t>(width) * height; }
     RenderMode mode() const { return settings.mode; }
     bool gather_photons() const { return mode_needs_photons(settings.mode); }
     bool direct_light() const { return mode_info(settings.mode).direct_light; }
@@ -53,7 +54,7 @@ struct FramePlan {
 template <class Device, class Sample>
 void run_samples(Device& dev, const FramePlan& plan, Image& linear, AovImages& aovs, StageTimes& times,
                  Sample&& sample) {
-    const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
+    const std::uint64_t pixels = plan.pixels();
     // Modes without a shade pass (path: its vertices stay in registers) need only the sums and AOVs.
     const std::uint64_t per_pixel = plan.keeps_vertices() ? pixels : 0;
     const std::uint64_t slots = per_pixel * kMaxDiffuseVertices;
@@ -104,7 +105,7 @@ void run_path_frame(Device& dev, const GeometryView& geometry, const LightSelect
     run_samples(dev, plan, linear, aovs, times, [&](const FrameBuffersView& fb, std::uint32_t s, auto& lap, auto& report) {
         PathPass path{geometry, lights, plan.camera, fb, s, plan.settings.max_depth, plan.settings.max_bounces,
                       plan.epsilon};
-        dev.launch(static_cast<std::uint64_t>(plan.width) * plan.height, path);
+        dev.launch(plan.pixels(), path);
         times.ray_tracing_ms += lap();
         report(s, 3);
     });
@@ -117,7 +118,7 @@ template <class Device>
 void run_gather_frame(Device& dev, const GeometryView& geometry, const LightSelection& lights,
                       const PhotonGatherPass& gather_template, const FramePlan& plan, Image& linear, AovImages& aovs,
                       StageTimes& times) {
-    const std::uint64_t pixels = static_cast<std::uint64_t>(plan.width) * plan.height;
+    const std::uint64_t pixels = plan.pixels();
     constexpr bool packets = traces_packets_v<Device>;
     const bool final_gather = plan.mode() == RenderMode::final_gather;
     IrradianceCache fresh_cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius);
@@ -171,7 +172,7 @@ void run_frame(Device& dev, const GeometryView& geometry, const LightSelection& 
         case RenderMode::path: return run_path_frame(dev, geometry, lights, plan, linear, aovs, times);
         case RenderMode::albedo:
             return run_samples(dev, plan, linear, aovs, times, [&](const FrameBuffersView& fb, std::uint32_t s, auto& lap, auto&) {
-                dev.launch(static_cast<std::uint64_t>(plan.width) * plan.height, AlbedoPass{geometry, plan.camera, fb, s});
+                dev.launch(plan.pixels(), AlbedoPass{geometry, plan.camera, fb, s});
                 times.ray_tracing_ms += lap();
             });
         case RenderMode::photons:

@@ -28,8 +28,7 @@ struct AlbedoPass {
 
     KDPM_HD void operator()(std::uint64_t item) const {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
-        const auto x = static_cast<std::uint32_t>(pixel % frame.width), y = static_cast<std::uint32_t>(pixel / frame.width);
-        const CameraRay cam = camera.ray(x, y, sample);
+        const CameraRay cam = camera.ray_at(pixel, frame.width, sample);
         PathVertex at;
         if (!camera_path_vertex(geometry, camera, frame, sample, pixel, 0, cam.origin, cam.direction, at)) return;
         const MaterialRecord& m = at.material;

@@ -51,9 +51,7 @@ struct PathPass {
 
     KDPM_HD void operator()(std::uint64_t item) const {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
-        const std::uint32_t x = static_cast<std::uint32_t>(pixel % frame.width);
-        const std::uint32_t y = static_cast<std::uint32_t>(pixel / frame.width);
-        const CameraRay cam = camera.ray(x, y, sample);
+        const CameraRay cam = camera.ray_at(pixel, frame.width, sample);
         const std::uint64_t path = (pixel << 32) | sample;
 
         glm::vec3 origin = cam.origin, direction = cam.direction;

@@ -56,9 +56,7 @@ struct TracePass {
 
     KDPM_HD void operator()(std::uint64_t item) const {
         const std::uint64_t pixel = tiled_pixel(item, frame.width, frame.height);
-        const std::uint32_t x = static_cast<std::uint32_t>(pixel % frame.width);
-        const std::uint32_t y = static_cast<std::uint32_t>(pixel / frame.width);
-        trace_pixel(pixel, camera.ray(x, y, sample), nullptr);
+        trace_pixel(pixel, camera.ray_at(pixel, frame.width, sample), nullptr);
     }
 
     // The pixel's sample from its camera ray `cam`; `camera_hit`: that ray's closest hit when a

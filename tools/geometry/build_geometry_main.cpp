@@ -1,19 +1,15 @@
 // kdpm-build-geometry INPUT -o scene.kdg: scene card or mesh -> SAH geometry kd-tree file.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <string>
-#include <vector>
 
-#include "builders/geometry/geometry_file_builder.h"
-#include "builders/geometry/scene_card.h"
-#include "formats/output_file.h"
 #include "runtime/backend/thread_limit.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
 #include "tools/cli/sah_cost_options.h"
+#include "tools/jobs/geometry_job.h"
 
 using namespace kdpm;
 
@@ -57,43 +53,24 @@ int main(int argc, char** argv) {
 
     return cli::run_tool("kdpm-build-geometry", [&] {
         if (output.empty()) throw std::runtime_error("no output file given (-o FILE)");
-        std::vector<std::filesystem::path> inputs{input};
-        if (is_scene_card(input)) inputs.push_back(card_mesh_path(input));
-        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
-        const auto start = std::chrono::steady_clock::now();
-        Scene scene = load_scene_input(input);
-        if (!quiet)
-            for (const std::string& w : scene.warnings) std::fprintf(stderr, "kdpm-build-geometry: warning: %s\n", w.c_str());
-        const auto imported = std::chrono::steady_clock::now();
-        GeometryBuild build = [&] {
+        const GeometryJobResult built = [&] {
             cli::Progress progress("building kd-tree", quiet);
-            auto b = build_geometry_file(scene, params, [&](double f) { progress.update(f); });
+            auto b = build_geometry_job(input, output, params, [&](double f) { progress.update(f); });
             progress.finish();
             return b;
         }();
-        const auto built = std::chrono::steady_clock::now();
-        build.writer.write(output);
-        if (!quiet && build.repeated_triangles > 0)
-            std::fprintf(stderr,
-                         "kdpm-build-geometry: warning: %llu triangles are exact copies of earlier ones; the tree holds "
-                         "the first copy only\n",
-                         static_cast<unsigned long long>(build.repeated_triangles));
-        if (!quiet && build.stats.max_leaf_triangles > kLargeLeafTriangles)
-            std::fprintf(stderr,
-                         "kdpm-build-geometry: warning: a leaf holds %u triangles (overlapping triangles that no split "
-                         "separates); rays through it will be slow\n",
-                         build.stats.max_leaf_triangles);
+        if (!quiet)
+            for (const std::string& w : built.warnings) std::fprintf(stderr, "kdpm-build-geometry: warning: %s\n", w.c_str());
         if (!quiet) {
-            const KdTreeStats& s = build.stats;
-            auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+            const KdTreeStats& s = built.stats;
             std::error_code ec;
             const auto bytes = std::filesystem::file_size(output, ec);
             std::printf("%s: %zu triangles, %llu nodes, %llu leaves (%llu empty), depth %u, %.2f triangles/leaf, "
                         "SAH cost %.2f, import %.0f ms, build %.0f ms, %.1f MB\n",
-                        output.c_str(), scene.triangles.size(), static_cast<unsigned long long>(s.nodes),
+                        output.c_str(), built.triangles, static_cast<unsigned long long>(s.nodes),
                         static_cast<unsigned long long>(s.leaves), static_cast<unsigned long long>(s.empty_leaves),
-                        s.max_depth, s.mean_leaf_triangles, s.sah_cost, ms(start, imported), ms(imported, built),
+                        s.max_depth, s.mean_leaf_triangles, s.sah_cost, built.import_ms, built.build_ms,
                         static_cast<double>(bytes) / 1e6);
         }
         return 0;

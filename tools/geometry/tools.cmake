@@ -1,4 +1,4 @@
 # tools/geometry: executables of this area.
-kdpm_tool(kdpm-build-geometry geometry/build_geometry_main.cpp kdpm_geometry_builder kdpm_backend_cpu)
+kdpm_tool(kdpm-build-geometry geometry/build_geometry_main.cpp kdpm_jobs)
 kdpm_tool(kdpm-bench-build geometry/bench_build_main.cpp kdpm_geometry_builder kdpm_backend_cpu)
 target_compile_definitions(kdpm-bench-build PRIVATE KDPM_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -1,24 +1,20 @@
 // kdpm-shoot-photons SCENE.kdg -n COUNT --bounces B -o PHOTONS.kdph: traces photon paths from the
 // scene's area lights and stores every diffuse hit (with its bounce index and caustic flag).
 // --paths BEGIN:END traces only those paths of the COUNT, a shard for kdpm-merge-photons.
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
-#include "builders/photons/photon_hits_file.h"
 #include "builders/photons/photon_shards.h"
-#include "formats/output_file.h"
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/cuda_device.h"
 #include "runtime/backend/thread_limit.h"
-#include "runtime/geometry/geometry_file.h"
-#include "runtime/photons/photon_shooter.h"
 #include "tools/cli/args.h"
 #include "tools/cli/progress.h"
 #include "tools/cli/run_tool.h"
+#include "tools/jobs/photon_jobs.h"
 
 using namespace kdpm;
 
@@ -46,63 +42,35 @@ int main(int argc, char** argv) {
     args.parse(argc, argv);
     return cli::run_tool("kdpm-shoot-photons", [&] {
         if (output.empty()) throw std::invalid_argument("no output file (use -o FILE.kdph)");
-        const std::filesystem::path inputs[] = {input};
-        check_output_destination(output, inputs);
         ThreadLimit limit(threads);
-        auto geometry = GeometryFile::open(input);  // checksums verified on open
-        const auto& info = geometry.info();
-        ShootOptions options;
-        options.photons = photons > 0 ? static_cast<std::uint64_t>(photons)
-                                      : (info.default_photons > 0 ? info.default_photons : 262144u);
-        options.max_bounces = bounces >= 0 ? static_cast<std::uint32_t>(bounces)
-                                           : (info.default_bounces > 0 && info.default_bounces <= 255 ? info.default_bounces : 4u);
-        options.seed = static_cast<std::uint32_t>(seed);
-        const PathRange range = paths.empty() ? PathRange{0, options.photons} : parse_path_range(paths, options.photons);
-        options.path_begin = range.begin;
-        options.path_end = range.end;
+        ShootJob job;
+        job.photons = static_cast<std::uint64_t>(photons);
+        job.bounces = bounces;
+        job.seed = static_cast<std::uint32_t>(seed);
+        job.paths = paths;
         const BackendSelection selected = select_backend(backend);
         if (!selected.notice.empty() && !quiet) std::cerr << "kdpm-shoot-photons: " << selected.notice << "\n";
-        options.backend = selected.kind;
-        // The CUDA context is made before the clock starts: its start-up is the process's, not the shot's.
+        job.backend = selected.kind;
+        // The CUDA context is made before the shot's clock starts: its start-up is the process's.
         const double device_start_ms = selected.kind == BackendKind::cuda ? start_cuda_device() : 0.0;
-
-        auto start = std::chrono::steady_clock::now();
-        ShotPhotons shot = [&] {
+        const ShootJobResult shot = [&] {
             cli::Progress progress("shooting photons", quiet);
-            auto s = shoot_photons(geometry.view(), options, [&](double f) { progress.update(f); });
+            auto s = shoot_photons_job(input, output, job, [&](double f) { progress.update(f); });
             progress.finish();
             return s;
         }();
-        double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-        PhotonHitSet set{shot.info, std::move(shot.hits)};
-        Metadata meta;
-        meta.tool = "kdpm-shoot-photons";
-        meta.tool_version = kdpm_version();
-        meta.source_path = std::filesystem::path(input).filename().string();
-        meta.source_hash = hash_file(input);
-        meta.parameters["photons"] = std::to_string(options.photons);
-        meta.parameters["bounces"] = std::to_string(options.max_bounces);
-        meta.parameters["seed"] = std::to_string(options.seed);
-        meta.parameters[kPathsParameter] = path_range_text(range);
-        meta.parameters["store_direct"] = "true";
-        meta.statistics["stored"] = set.info.stored_count;
-        meta.statistics["caustic"] = set.info.caustic_count;
-        meta.statistics["rays"] = static_cast<double>(shot.rays);
-        photon_hits_writer(set, meta).write(output);
 
         if (!quiet) {
-            std::uint32_t direct = 0;
-            for (const auto& h : set.hits) direct += photon_bounce(h.flags) == 0;
-            const std::string shard = paths.empty() ? "" : "paths " + path_range_text(range) + " of ";
+            const std::string shard = paths.empty() ? "" : "paths " + path_range_text(shot.range) + " of ";
             char device[64] = "";
             if (selected.kind == BackendKind::cuda)
                 std::snprintf(device, sizeof device, " on CUDA after a %.0f ms device start", device_start_ms);
             std::printf("kdpm-shoot-photons: %s%llu emitted, %u stored (global map %u, caustic map %u; %u direct hits), "
                         "%llu rays, %.2f s%s (%.2f M rays/s) -> %s\n",
-                        shard.c_str(), static_cast<unsigned long long>(options.photons), set.info.stored_count,
-                        set.info.stored_count, set.info.caustic_count, direct,
-                        static_cast<unsigned long long>(shot.rays), secs, device, shot.rays / secs * 1e-6, output.c_str());
+                        shard.c_str(), static_cast<unsigned long long>(shot.emitted), shot.info.stored_count,
+                        shot.info.stored_count, shot.info.caustic_count, shot.direct_hits,
+                        static_cast<unsigned long long>(shot.rays), shot.seconds, device,
+                        shot.rays / shot.seconds * 1e-6, output.c_str());
         }
         return 0;
     });

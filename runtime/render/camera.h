@@ -49,11 +49,11 @@ struct PinholeCamera {
     // The angle one pixel subtends (radians, small-angle): a camera ray's footprint is t times it.
     KDPM_HD float pixel_spread() const { return 2.0f * glm::length(up) / static_cast<float>(height); }
 
-    // Ray through pixel (x, y) (row 0 at the top) for sample s of `samples`.
     // The ray of the row-major pixel index `pixel` of an image `image_width` pixels wide.
     KDPM_HD CameraRay ray_at(std::uint64_t pixel, std::uint32_t image_width, std::uint32_t s) const {
         return ray(static_cast<std::uint32_t>(pixel % image_width), static_cast<std::uint32_t>(pixel / image_width), s);
     }
+    // Ray through pixel (x, y) (row 0 at the top) for sample s of `samples`.
     KDPM_HD CameraRay ray(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
         float jx = 0.5f, jy = 0.5f;
         if (samples > 1) {

@@ -11,6 +11,20 @@
 
 namespace kdpm {
 
+SceneViews scene_views_of(const GeometryFile& geometry, const PhotonMapFile* photons) {
+    SceneViews views;
+    views.geometry = geometry.view();
+    views.camera = geometry.camera();
+    if (photons) {
+        views.photons.global = photons->view(PhotonMapKind::global);
+        views.photons.caustic = photons->view(PhotonMapKind::caustic);
+        views.photons.irradiance = photons->irradiance_map();
+        views.photons.present = true;
+        views.photons.typical_radius = photons->info(PhotonMapKind::global).query_radius;
+    }
+    return views;
+}
+
 struct LoadedScene::Files {
     std::optional<GeometryFile> geometry;
     std::optional<PhotonMapFile> photons;
@@ -53,15 +67,7 @@ LoadedScene LoadedScene::load(const std::filesystem::path& geometry,
     if (photons_thread.joinable()) photons_thread.join();
     else if (photons) open_photons();
     if (photons_error) std::rethrow_exception(photons_error);
-    scene.views_.geometry = scene.files_->geometry->view();
-    scene.views_.camera = scene.files_->geometry->camera();
-    if (photons) {
-        scene.views_.photons.global = scene.files_->photons->view(PhotonMapKind::global);
-        scene.views_.photons.caustic = scene.files_->photons->view(PhotonMapKind::caustic);
-        scene.views_.photons.irradiance = scene.files_->photons->irradiance_map();
-        scene.views_.photons.present = true;
-        scene.views_.photons.typical_radius = scene.files_->photons->info(PhotonMapKind::global).query_radius;
-    }
+    scene.views_ = scene_views_of(*scene.files_->geometry, photons ? &*scene.files_->photons : nullptr);
     scene.load_ms_ = watch.lap_ms();
     return scene;
 }

@@ -9,6 +9,12 @@
 
 namespace kdpm {
 
+class GeometryFile;
+class PhotonMapFile;
+
+// The renderer's views of files already open (photons may be null: no photon maps).
+SceneViews scene_views_of(const GeometryFile& geometry, const PhotonMapFile* photons);
+
 class LoadedScene {
 public:
     // Throws FormatError / std::runtime_error with a one-line reason.

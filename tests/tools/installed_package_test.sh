@@ -34,4 +34,15 @@ awk '/^hit triangle/ { split($0, a, /[=(), ]+/); hx = a[8]; hy = a[9]; hz = a[10
      /^  photon/ { split($0, b, /[(), ]+/); d = sqrt((b[5]-hx)^2 + (b[6]-hy)^2 + (b[7]-hz)^2)
        if ((d - b[9])^2 > 1e-6) bad = 1; n++ }
      END { exit bad || n != 7 }' <<<"$out"
+# The Python package, where the build has it: importable from the prefix, tracing the same hit.
+if [ -d "$build/python/kdpm" ]; then
+  init=$(find "$prefix/lib" -path '*-packages/kdpm/__init__.py' | head -1)
+  [ -n "$init" ] || { echo "not installed: the kdpm Python package"; exit 1; }
+  PYTHONPATH=$(dirname "$(dirname "$init")") "${KDPM_PYTHON:-python3}" -B -c "
+import numpy, kdpm
+g = kdpm.GeometryFile('$work/scene.kdg')
+hits = g.intersect(numpy.array([[0, 1, 3.9]], 'f4'), numpy.array([[0, 0, -1]], 'f4'))
+assert hits['triangle'][0] >= 0 and abs(hits['t'][0] - 3.9) < 0.5, hits
+print('installed Python package:', kdpm.__file__)"
+fi
 echo "installed package: ok"

@@ -45,7 +45,8 @@ py::array_t<T> image_array(const std::vector<T>& values, int height, int width, 
 
 py::object render(const PyGeometryFile& geometry, const py::object& photons, const std::string& mode, int spp,
                   int width, int height, int k, const py::object& max_radius, int light_samples, int max_depth,
-                  int max_bounces, const py::object& passes, int gather_rays, bool irradiance_cache,
+                  int max_bounces, const py::object& passes, int gather_rays, const std::string& gather_lookup,
+                  bool irradiance_cache,
                   const py::object& camera, const std::vector<std::string>& aovs, const std::string& backend,
                   int threads, bool quiet) {
     RenderSettings settings;
@@ -85,6 +86,11 @@ py::object render(const PyGeometryFile& geometry, const py::object& photons, con
     settings.max_depth = static_cast<std::uint32_t>(max_depth);
     settings.max_bounces = static_cast<std::uint32_t>(max_bounces);
     settings.gather_rays = static_cast<std::uint32_t>(gather_rays);
+    try {
+        settings.gather_lookup = parse_gather_lookup(gather_lookup);
+    } catch (const std::invalid_argument& e) {
+        throw py::value_error(std::string("gather_lookup: ") + e.what());
+    }
     settings.irradiance_cache = irradiance_cache;
     settings.camera = camera_arg(geometry.file.camera(), camera);
     settings.aovs = aovs_arg(aovs);
@@ -122,6 +128,7 @@ void bind_render(py::module_& m) {
           py::arg("k") = 0, py::arg("max_radius") = py::none(), py::arg("light_samples") = defaults.light_samples,
           py::arg("max_depth") = defaults.max_depth, py::arg("max_bounces") = defaults.max_bounces,
           py::arg("passes") = py::none(), py::arg("gather_rays") = defaults.gather_rays,
+          py::arg("gather_lookup") = gather_lookup_name(defaults.gather_lookup),
           py::arg("irradiance_cache") = defaults.irradiance_cache, py::arg("camera") = py::none(),
           py::arg("aovs") = std::vector<std::string>{}, py::arg("backend") = "cpu", py::arg("threads") = 0,
           py::arg("quiet") = false,

@@ -14,6 +14,7 @@ RadianceEstimateParams irradiance_estimate_params(std::uint32_t k, float typical
     RadianceEstimateParams params;
     params.k = clamp_gather_k(k);
     params.max_radius = scaled_gather_radius(typical_radius_32, params.k, kIrradianceRadiusFactor);
+    params.plane_distance = kPlaneDistanceFactor * typical_radius_32;
     return params;
 }
 

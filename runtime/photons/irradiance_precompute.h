@@ -2,7 +2,8 @@
 // The irradiance stored in a .kdp's irradiance map: at every `every`-th photon of the global map
 // (leaf order, so the chosen ones spread like the photons), the k-nearest density estimate of
 // the runtime (estimate_radiance over every photon of the map, direct and caustic ones
-// included) at the photon's position and stored normal, as irradiance E = pi * L / albedo.
+// included, with the plane test) at the photon's position and stored normal, as irradiance
+// E = pi * L / albedo.
 #include <cstdint>
 #include <vector>
 

@@ -137,11 +137,9 @@ void run_gather_frame(Device& dev, const GeometryView& geometry, const LightSele
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
             if (final_gather && plan.irradiance_cache)
-                run_cached_gather(dev, cache, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
-                                                                     plan.settings.max_depth, plan.epsilon));
+                run_cached_gather(dev, cache, make_final_gather_pass(geometry, lights, gather, s, plan.settings, plan.epsilon));
             else if (final_gather)
-                dev.launch(pixels, make_final_gather_pass(geometry, gather, s, plan.settings.gather_rays,
-                                                          plan.settings.max_depth, plan.epsilon));
+                dev.launch(pixels, make_final_gather_pass(geometry, lights, gather, s, plan.settings, plan.epsilon));
             else if constexpr (gathers_by_tile_v<Device>)
                 dev.launch(PhotonTileGatherPass::work_items(fb), PhotonTileGatherPass{gather});
             else

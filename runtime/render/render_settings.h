@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "formats/geometry_layout.h"
+#include "runtime/render/final_gather/gather_lookup.h"
 #include "runtime/render/image/image.h"
 #include "runtime/render/image/post_process.h"
 #include "runtime/render/render_modes.h"
@@ -39,6 +40,7 @@ struct RenderSettings {
     std::uint64_t photons_per_pass = 0;   // mode sppm: photon paths shot per pass; 0: one per pixel
     float sppm_radius = 0.0f;             // mode sppm: initial gather radius; 0: from the scene
     std::uint32_t gather_rays = 64;       // mode final-gather: gather rays per diffuse point and sample
+    GatherLookup gather_lookup = GatherLookup::irradiance_map;  // mode final-gather: what a gather hit reads
     bool irradiance_cache = true;         // mode final-gather: gather only at cache records (CPU backend)
     float ic_accuracy = 0.2f;             // the cache's error bound a: records are used where e_i < a
     // Keep the cache's records for this renderer's later frames while the scene's gather settings

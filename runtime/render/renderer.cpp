@@ -25,6 +25,7 @@ struct KeptIrradianceCache {
         std::uint32_t k, max_depth, gather_rays;
         float max_radius, disc_flatten, ic_accuracy, min_radius, max_record_radius;
         bool cone_filter, fixed_radius;
+        GatherLookup lookup;
         bool operator==(const Key&) const = default;
     };
     // Past this many records the cache starts afresh: a long flight through a large scene would
@@ -37,7 +38,7 @@ struct KeptIrradianceCache {
     static Key key_of(const FramePlan& plan) {
         const RenderSettings& s = plan.settings;
         return {s.k, s.max_depth, s.gather_rays, s.max_radius, s.disc_flatten, s.ic_accuracy,
-                plan.cache_min_radius, plan.cache_max_radius, s.cone_filter, s.fixed_radius};
+                plan.cache_min_radius, plan.cache_max_radius, s.cone_filter, s.fixed_radius, s.gather_lookup};
     }
     KeptIrradianceCache(const FramePlan& plan)
         : key(key_of(plan)), cache(plan.settings.ic_accuracy, plan.cache_min_radius, plan.cache_max_radius) {}

@@ -47,6 +47,7 @@ namespace random_seed {
 inline constexpr std::uint32_t path = 0x70617468u;    // --mode path
 inline constexpr std::uint32_t sppm = 0x7370706du;    // --mode sppm
 inline constexpr std::uint32_t gather = 0x67617468u;  // final-gather rays and irradiance-cache records
+inline constexpr std::uint32_t gather_path = 0x67706174u;  // final gather's path-traced lookup (gather_lookup.h)
 }  // namespace random_seed
 
 // One stream of counter_random, handed to samplers that read it by dimension: a mode's seed, a

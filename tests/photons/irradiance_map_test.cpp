@@ -15,6 +15,7 @@
 #include "runtime/photons/irradiance_precompute.h"
 #include "runtime/photons/photon_map_file.h"
 #include "runtime/shading/constants.h"
+#include "runtime/shading/diffuse.h"
 #include "tests/photons/synthetic_photons.h"
 #include "tests/support/error_text.h"
 #include "tests/support/built_tree_view.h"
@@ -26,12 +27,13 @@ using namespace kdpm;
 
 namespace {
 
-constexpr std::uint32_t kK = 24;
+constexpr std::uint32_t kK = 48;  // over 32: the sector share applies
 
 IrradiancePrecompute every_nth(std::uint32_t every) { return every_nth_photon_irradiance(every, kK); }
 
 // Jensen's estimate by sorting every photon by distance: the k nearest that may light the
-// surface (the runtime's photon filter), r the k-th distance or the search limit.
+// surface (the runtime's photon filter and plane test), r the k-th distance or the search limit,
+// the disc's area counted over the 45-degree sectors about the normal that hold a photon.
 // Returns false when the k-th and (k+1)-th distances tie (then the choice of photon is arbitrary).
 bool brute_force_irradiance(const PhotonMapView& map, std::uint32_t slot, const RadianceEstimateParams& params,
                             glm::vec3& out) {
@@ -44,15 +46,28 @@ bool brute_force_irradiance(const PhotonMapView& map, std::uint32_t slot, const 
     for (std::uint32_t j = 0; j < map.photon_count; ++j) {
         const glm::vec3 d = glm::vec3(map.x[j], map.y[j], map.z[j]) - p;
         const float d2 = d.x * d.x + d.y * d.y + d.z * d.z;
-        if (d2 < limit2 && filter(j)) near.emplace_back(d2, j);
+        const float h = glm::dot(d, glm::vec3(n[0], n[1], n[2]));
+        const bool on_plane = std::fabs(h) <= params.plane_distance ||
+                              std::fabs(h) <= kPlaneSlope * std::sqrt(std::max(0.0f, d2 - h * h));
+        if (d2 < limit2 && filter(j) && on_plane) near.emplace_back(d2, j);
     }
     std::sort(near.begin(), near.end());
     if (near.size() > params.k && near[params.k - 1].first == near[params.k].first) return false;
     const std::size_t used = std::min<std::size_t>(near.size(), params.k);
     const float r2 = used == params.k ? near[used - 1].first : limit2;
-    glm::vec3 flux(0.0f);
-    for (std::size_t i = 0; i < used; ++i) flux += photon_power(map.power[near[i].second]);
-    out = used == 0 ? glm::vec3(0.0f) : flux / (kPi * r2);
+    glm::vec3 flux(0.0f), t, b;
+    tangent_frame(glm::vec3(n[0], n[1], n[2]), t, b);
+    bool sector[8] = {};
+    for (std::size_t i = 0; i < used; ++i) {
+        const std::uint32_t j = near[i].second;
+        flux += photon_power(map.power[j]);
+        const glm::vec3 d = glm::vec3(map.x[j], map.y[j], map.z[j]) - p;
+        const double angle = std::atan2(glm::dot(d, b), glm::dot(d, t));  // (-pi, pi]
+        sector[static_cast<int>(std::floor((angle + kPi) / (kPi / 4.0))) & 7] = true;
+    }
+    const double share = used >= 32 ? static_cast<double>(std::count(sector, sector + 8, true)) / 8.0 : 1.0;
+    out = used == 0 ? glm::vec3(0.0f) : flux / static_cast<float>(kPi * r2 * share);
+    REQUIRE(params.plane_distance > 0.0f);
     return true;
 }
 
@@ -205,7 +220,7 @@ TEST_CASE("a gather hit reads the irradiance of the nearest chosen photon on its
             if (d2 < best && accept(j)) best = d2, nearest = j;
         }
         glm::vec3 e(-1.0f);
-        const bool hit = lookup_irradiance(irr, p, n, radius, min_cos, heap, e);
+        const bool hit = lookup_irradiance(irr, p, n, radius, min_cos, 0.0f, heap, e);
         INFO("query " << q);
         REQUIRE(hit == (nearest >= 0));
         if (!hit) {

@@ -229,8 +229,8 @@ TEST_CASE("Irradiance lookups that skip ruled-out nodes find the same photon", "
         const glm::vec3 normal = q % 2 ? random_unit(rng) : glm::vec3(0, 0, q % 4 == 0 ? 1 : -1);
         const float limit = q % 3 == 0 ? 0.0f : 0.2f;
         glm::vec3 a(-1.0f), b(-2.0f);
-        const bool in_a = lookup_irradiance(plain, pos, normal, limit, 0.7f, heap, a);
-        const bool in_b = lookup_irradiance(bounded, pos, normal, limit, 0.7f, heap, b);
+        const bool in_a = lookup_irradiance(plain, pos, normal, limit, 0.7f, 0.0f, heap, a);
+        const bool in_b = lookup_irradiance(bounded, pos, normal, limit, 0.7f, 0.0f, heap, b);
         INFO("query " << q);
         REQUIRE(in_a == in_b);
         if (in_a) REQUIRE(a == b);

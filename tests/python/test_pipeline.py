@@ -40,6 +40,13 @@ def test_render_is_kdpm_render_s_image(cornell, geometry, photons, tmp_path):
         assert image.shape == (30, 40, 3) and image.dtype == np.float32
         assert np.array_equal(image, read_pfm(out)), mode
         assert np.all(np.isfinite(image)) and image.mean() > 0
+    # The path-traced gather lookup, through both doors.
+    out = tmp_path / "fg-path.pfm"
+    run_tool("kdpm-render", cornell["kdg"], cornell["kdp"], "-o", out, "--mode", "final-gather", "--width", 24,
+             "--height", 16, "--gather-rays", 8, "--gather-lookup", "path", "--backend", "cpu")
+    image = kdpm.render(geometry, photons, mode="final-gather", width=24, height=16, gather_rays=8,
+                        gather_lookup="path", quiet=True)
+    assert np.array_equal(image, read_pfm(out))
 
 
 def test_render_aovs_match_the_rays(geometry):
@@ -71,6 +78,8 @@ def test_render_refuses_what_kdpm_render_refuses(geometry):
         kdpm.render(geometry, mode="photons")  # no photon map
     with pytest.raises(ValueError):
         kdpm.render(geometry, mode="nonsense")
+    with pytest.raises(ValueError):
+        kdpm.render(geometry, mode="direct", gather_lookup="nearest")
     with pytest.raises(ValueError):
         kdpm.render(geometry, mode="direct", spp=0)
     with pytest.raises(ValueError):

@@ -158,7 +158,7 @@ TEST_CASE("final gathering with the irradiance cache on the Cornell box agrees w
 TEST_CASE("kdpm-render refuses bad irradiance cache options in one line", "[render][irradiance-cache][cli]") {
     test::CornellBoxRuns box;
     for (const std::string bad : {"--ic-accuracy 0", "--ic-accuracy 1.5", "--ic-accuracy x", "--ic-accuracy nan",
-                                  "--irradiance-cache maybe"}) {
+                                  "--irradiance-cache maybe", "--gather-lookup nearest", "--gather-lookup"}) {
         const auto r = test::run_tool("kdpm-render " + box.kdg + " --mode direct " + bad + " -o " +
                                       (box.dir / "x.png").string());
         INFO(bad << ": " << r.output);

@@ -100,6 +100,11 @@ int run(int argc, char** argv) {
         .option("gather-rays", &gather_rays, "N",
                 "mode final-gather: cosine-distributed gather rays per diffuse point and sample (default 64)", 1,
                 static_cast<int>(kMaxGatherRays))
+        .option("gather-lookup", "irradiance-map|estimate|path",
+                "mode final-gather: what a gather ray reads where it hits a diffuse surface: the .kdp's precomputed "
+                "irradiance (default), the photon map's k-nearest estimate there, or a path traced on (slow, no "
+                "photon-map bias)",
+                [&](const std::string& v) { settings.gather_lookup = parse_gather_lookup(v); })
         .option("irradiance-cache", "on|off",
                 "mode final-gather: gather rays only at irradiance cache records, interpolated between them "
                 "(default on; off: at every diffuse point; CPU backend only)",

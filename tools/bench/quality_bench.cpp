@@ -1,6 +1,7 @@
 #include "tools/bench/quality_bench.h"
 
 #include <algorithm>
+#include <cctype>
 #include <thread>
 
 #include "builders/geometry/geometry_file_builder.h"
@@ -9,6 +10,7 @@
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/photons/photon_shooter.h"
+#include "runtime/render/image/image_output.h"
 #include "runtime/render/image/image_stats.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
@@ -63,7 +65,9 @@ std::string plural(std::uint32_t n, const char* one, const char* many) {
 }
 
 std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
-    const double stop = 2.0 * c.seconds;  // one rung past the budget shows where the curve goes
+    // One rung past the largest budget shows where the curve goes.
+    double stop = 2.0 * c.seconds;
+    for (double b : c.budgets) stop = std::max(stop, b);
     const std::uint32_t size = c.size, max_bounces = c.max_bounces;
     auto base = [size](RenderMode mode) {
         RenderSettings s;
@@ -83,10 +87,11 @@ std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
     // Final gathering: samples per pixel and gather rays doubled in turn (rays up to 1024): at one
     // sample the image is sampled at pixel centres, and the edges' aliasing, not the gather
     // noise, bounds its error however many rays are sent.
-    auto by_gather_rays = [base](std::uint32_t first, bool cache) {
-        return [base, first, cache](int i) -> std::optional<RungSettings> {
+    auto by_gather_rays = [base](std::uint32_t first, bool cache, GatherLookup lookup = GatherLookup::irradiance_map) {
+        return [base, first, cache, lookup](int i) -> std::optional<RungSettings> {
             RenderSettings s = base(RenderMode::final_gather);
             s.irradiance_cache = cache;
+            s.gather_lookup = lookup;
             std::uint32_t rays = first, spp = 1;
             for (int j = 0; j < i; ++j) (j % 2 == 0 || rays >= 1024 ? spp : rays) *= 2;
             if (spp > 1024) return std::nullopt;
@@ -102,7 +107,7 @@ std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
         s.max_bounces = max_bounces;
         return RungSettings{plural(s.passes, "pass", "passes"), s};
     };
-    return {
+    std::vector<LadderPlan> plans{
         {ladder_label(RenderMode::path), by_spp(RenderMode::path), stop},
         {ladder_label(RenderMode::photons), by_spp(RenderMode::photons), stop},
         {ladder_label(RenderMode::direct_photons), by_spp(RenderMode::direct_photons), stop},
@@ -110,18 +115,49 @@ std::vector<LadderPlan> ladder_plans(const QualityConfig& c) {
         {ladder_label(RenderMode::final_gather, kUncachedGather), by_gather_rays(4, false), stop},
         {ladder_label(RenderMode::sppm), by_passes, std::max(stop, c.sppm_seconds)},
     };
+    if (c.breakdown) {
+        plans.push_back({ladder_label(RenderMode::final_gather, kEstimateLookup),
+                         by_gather_rays(16, true, GatherLookup::estimate), stop});
+        plans.push_back({ladder_label(RenderMode::final_gather, kPathLookup), by_gather_rays(16, true, GatherLookup::path),
+                         stop});
+    }
+    return plans;
 }
 
-Rung measure(const RungSettings& r, Renderer& renderer, const Image& reference, const ImageMeans& ref_means) {
+// The normal and depth AOVs of the centre rays, for edge_mask.
+std::vector<std::uint8_t> scene_edges(Renderer& renderer, std::uint32_t size) {
+    RenderSettings s;
+    s.width = s.height = size;
+    s.mode = RenderMode::albedo;
+    s.aovs.depth = s.aovs.normal = true;
+    const RenderResult r = renderer.render(s);
+    return edge_mask(r.aovs, static_cast<int>(size), static_cast<int>(size));
+}
+
+// The file name of a ladder's picture: its label with every non-alphanumeric run as one '-'.
+std::string picture_name(const std::string& scene, const std::string& mode) {
+    std::string out = scene + "-";
+    for (char ch : mode) {
+        if (std::isalnum(static_cast<unsigned char>(ch))) out += ch;
+        else if (out.back() != '-') out += '-';
+    }
+    while (out.back() == '-') out.pop_back();
+    return out + ".png";
+}
+
+Rung measure(const RungSettings& r, Renderer& renderer, const Image& reference, const ImageMeans& ref_means,
+             const std::vector<std::uint8_t>& edges, Image& image) {
     Rung rung;
     rung.setting = r.label;
     StopWatch watch;
-    const RenderResult result = renderer.render(r.settings);
+    RenderResult result = renderer.render(r.settings);
     rung.seconds = watch.lap_ms() / 1000.0;
+    rung.regions = split_error(result.linear, reference, edges);
     rung.relmse = relative_mse(result.linear, reference);
     const ImageMeans means = image_means(result.linear);
     rung.mean_ratio = ref_means.all > 0 ? means.all / ref_means.all : 0.0;
     for (int t = 0; t < 3; ++t) rung.third_ratio[t] = ref_means.thirds[t] > 0 ? means.thirds[t] / ref_means.thirds[t] : 0.0;
+    image = std::move(result.linear);
     return rung;
 }
 
@@ -147,6 +183,7 @@ QualityResult run_quality_bench(const QualityConfig& c) {
     out.max_bounces = c.max_bounces;
     out.threads = c.threads;
     out.seconds = c.seconds;
+    out.budgets = c.budgets;
     const auto kdg = c.work_dir / (c.name + ".kdg");
     const auto kdp = c.work_dir / (c.name + ".kdp");
     out.photon_bounces = build_scene_files(c, kdg, kdp);
@@ -190,18 +227,33 @@ QualityResult run_quality_bench(const QualityConfig& c) {
     ThreadLimit limit(c.threads);
     Renderer renderer(loaded.views(), BackendKind::cpu);
     renderer.render(ladder_plans(c).front().step(0)->settings);  // warm-up: first-touch costs
+    const std::vector<std::uint8_t> edges = scene_edges(renderer, c.size);
+    for (std::uint8_t e : edges) out.edge_share += e;
+    out.edge_share /= static_cast<double>(edges.empty() ? 1 : edges.size());
+    if (!c.images_dir.empty()) std::filesystem::create_directories(c.images_dir);
     for (const LadderPlan& plan : ladder_plans(c)) {
         Ladder ladder;
         ladder.mode = plan.mode;
+        Image image, best;
+        double best_relmse = 0;
         for (int i = 0; i < c.max_rungs; ++i) {
             const std::optional<RungSettings> settings = plan.step(i);
             if (!settings) break;
-            const Rung rung = measure(*settings, renderer, reference, ref_means);
+            const Rung rung = measure(*settings, renderer, reference, ref_means, edges, image);
+            if (rung.seconds <= c.seconds && (best.rgb.empty() || rung.relmse < best_relmse)) {
+                best_relmse = rung.relmse;
+                std::swap(best, image);
+            }
             if (c.say)
                 c.say(plan.mode + ", " + rung.setting + ": " + std::to_string(rung.seconds) + " s, relMSE " +
                       std::to_string(rung.relmse));
             ladder.rungs.push_back(rung);
             if (rung.seconds > plan.stop_seconds) break;
+        }
+        if (!c.images_dir.empty() && !best.rgb.empty()) {
+            ladder.picture = c.images_dir / picture_name(c.name, plan.mode);
+            const Image picture = side_by_side(best, reference);
+            write_frame(ladder.picture, FrameOutput{&picture, &picture, nullptr, AovSet{}});
         }
         out.ladders.push_back(std::move(ladder));
     }

@@ -11,6 +11,7 @@
 
 #include "runtime/backend/backend_kind.h"
 #include "runtime/render/image/image.h"
+#include "tools/bench/error_analysis.h"
 #include "runtime/render/render_modes.h"
 
 namespace kdpm::bench {
@@ -26,7 +27,10 @@ struct QualityConfig {
     std::uint32_t max_bounces = 0;  // path reference, path and sppm ladders; 0: unlimited
     std::uint32_t photons = 0;      // photon paths of the .kdp; 0: the scene card's
     int photon_bounces = -1;        // bounces of the .kdp's photons; -1: the scene card's; 0: unlimited
-    double seconds = 2.0;           // the equal-time budget
+    double seconds = 2.0;           // the equal-time budget of the verdicts and the pictures
+    std::vector<double> budgets{1, 2, 4, 8};  // the equal-time table's columns; ladders run past the last
+    bool breakdown = false;         // also the gather lookups' ladders (gather_lookup.h): where the bias is
+    std::filesystem::path images_dir;  // test | reference | error per ladder (empty: none)
     double sppm_seconds = 30.0;     // the sppm curve runs until a rung takes this long
     int max_rungs = 12;             // per ladder
     std::function<void(const std::string&)> say;  // progress lines (may be empty)
@@ -39,6 +43,7 @@ struct Rung {
     double relmse = 0;                   // against the reference
     double mean_ratio = 0;               // image mean / reference mean
     std::array<double, 3> third_ratio{}; // the same per horizontal third, top to bottom
+    RegionSplit regions;                 // near edges and flat (error_analysis.h)
 };
 
 // A ladder's label: the mode's name (render_modes.h), then the variant ("final-gather + cache").
@@ -46,10 +51,12 @@ inline std::string ladder_label(RenderMode mode, const std::string& variant = {}
     return render_mode_name(mode) + variant;
 }
 inline const std::string kCachedGather = " + cache", kUncachedGather = ", no cache";
+inline const std::string kEstimateLookup = " + cache, estimate lookup", kPathLookup = " + cache, path lookup";
 
 struct Ladder {
     std::string mode;  // ladder_label: "path", "photons", "direct+photons", "final-gather + cache", ...
     std::vector<Rung> rungs;
+    std::filesystem::path picture;  // test | reference | error of the best rung within the budget
 };
 
 struct QualityResult {
@@ -58,6 +65,8 @@ struct QualityResult {
     std::uint32_t photon_bounces = 0;  // of the .kdp the photon modes read
     int threads = 0;
     double seconds = 0;
+    std::vector<double> budgets;
+    double edge_share = 0;  // of the pixels, near geometric edges
     std::filesystem::path reference_file;
     bool reference_reused = false;
     double reference_render_seconds = 0;  // 0 when reused

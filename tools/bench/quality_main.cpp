@@ -5,7 +5,10 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "runtime/backend/backend_kind.h"
 #include "tools/bench/quality_bench.h"
@@ -27,6 +30,27 @@ fs::path default_work_dir() {
     return fs::temp_directory_path() / "kdpm-bench-quality";
 }
 
+// "1,2,4,8": positive seconds, at most 8 of them.
+std::vector<double> parse_budgets(const std::string& text) {
+    std::vector<double> out;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        std::size_t used = 0;
+        double v = 0;
+        try {
+            v = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != item.size() || item.empty() || !(v > 0.0 && v <= 1e6))
+            throw std::invalid_argument("budgets are seconds in (0, 1e6] separated by commas, got '" + item + "'");
+        out.push_back(v);
+    }
+    if (out.empty() || out.size() > 8) throw std::invalid_argument("give 1 to 8 budgets, got '" + text + "'");
+    return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -34,7 +58,9 @@ int main(int argc, char** argv) {
     int size = 512, threads = 2, reference_spp = 4096, max_bounces = 0, photons = 0, max_rungs = 12;
     int photon_bounces = -1;
     double seconds = 2.0, sppm_seconds = 30.0;
-    std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
+    std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work, pictures;
+    std::vector<double> budgets{1, 2, 4, 8};
+    bool breakdown = false;
     BackendRequest reference_backend = BackendRequest::automatic;
     cli::Args args("kdpm-bench-quality",
                    "Error against time of every lighting mode, against a converged path-traced reference.");
@@ -53,6 +79,13 @@ int main(int argc, char** argv) {
         .option("photon-bounces", &photon_bounces, "N",
                 "bounces of the .kdp's photons (default: the scene card's; 0: unlimited, as the reference's default)", 0, 255)
         .option("seconds", &seconds, "S", "the equal-time budget (default 2)", 1e-3, 1e6)
+        .option("budgets", "LIST", "the equal-time table's budgets in seconds (default 1,2,4,8); ladders run past the last",
+                [&](const std::string& v) { budgets = parse_budgets(v); })
+        .flag("breakdown", &breakdown,
+              "also final gathering with the k-nearest estimate and with a path traced on at the gather hits "
+              "(--gather-lookup): which part of the error is the photon map's")
+        .option("pictures", &pictures, "DIR",
+                "where the test | reference | error PNG of each mode goes (default: pictures/ in the work folder)")
         .option("sppm-seconds", &sppm_seconds, "S", "sppm's curve runs until a rung takes this long (default 30)", 0, 1e6)
         .option("max-rungs", &max_rungs, "N", "most settings per mode (default 12)", 1, 17)
         .option("repo", &scenes_root, "DIR", "folder holding scenes/ (default: the working directory or a parent, else found from the executable)")
@@ -83,6 +116,9 @@ int main(int argc, char** argv) {
             c.photons = static_cast<std::uint32_t>(photons);
             c.photon_bounces = photon_bounces;
             c.seconds = seconds;
+            c.budgets = budgets;
+            c.breakdown = breakdown;
+            c.images_dir = pictures.empty() ? dir / "pictures" : fs::path(pictures);
             c.sppm_seconds = sppm_seconds;
             c.max_rungs = max_rungs;
             c.progress_bar = talk;

@@ -31,4 +31,5 @@ target_link_libraries(kdpm-bench PRIVATE kdpm_view kdpm_runtime_photons)
 kdpm_tool(kdpm-bench-quality bench/quality_main.cpp
           kdpm_render kdpm_geometry_builder kdpm_photon_shooter kdpm_builders_photons kdpm_runtime_photons)
 target_sources(kdpm-bench-quality PRIVATE bench/quality_bench.cpp bench/quality_report.cpp bench/reference_cache.cpp
+               bench/error_analysis.cpp
                bench/scenes_root.cpp render/pfm_reader.cpp)

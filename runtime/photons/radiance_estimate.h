@@ -324,29 +324,34 @@ KDPM_HD inline RadianceEstimate estimate_radiance_in_radius(const PhotonMapView&
     return out;
 }
 
-// The share of the search disc the found photons cover, for an estimate with the plane test:
-// the disc is cut in 8 sectors about the normal and each holding a photon counts. Where the
-// surface ends within the disc (an edge, a crease whose other side the filters refuse), the
-// photons' flux spreads over less than pi r^2, and dividing by all of it darkens every edge;
-// on a surface that fills the disc, 32 or more photons leave a sector empty with probability
-// (7/8)^31 < 2e-2 each. Fewer photons: 1 (no correction).
+// The share of the search disc of radius^2 r2 the found photons cover, for an estimate with the
+// plane test. Where the surface ends within the disc (an edge, a crease whose other side the
+// filters refuse, a column thinner than the disc), the photons' flux spreads over less than
+// pi r^2, and dividing by all of it darkens every edge and thin part. The disc is cut into 16
+// cells of equal area, 8 sectors about the normal in two rings (the inner one out to r / sqrt 2),
+// and the cells holding a photon count; on a surface filling the disc, n photons leave a cell
+// empty with probability (15/16)^n, which the share is divided by the expectation of. Fewer
+// than 32 photons: 1 (no correction, too coarse).
 KDPM_HD inline float covered_share(const PhotonMapView& map, const KnnHeap& heap, std::uint32_t found, glm::vec3 position,
-                                   glm::vec3 normal) {
-    if (found < 32) return 1.0f;
+                                   glm::vec3 normal, float r2) {
+    if (found < 32 || !(r2 > 0.0f)) return 1.0f;
     glm::vec3 t, b;
     tangent_frame(normal, t, b);
-    std::uint32_t sectors = 0;
+    std::uint32_t cells = 0;
     for (std::uint32_t i = 0; i < found; ++i) {
         const std::uint32_t p = heap.index[i];
         const glm::vec3 d(map.x[p] - position.x, map.y[p] - position.y, map.z[p] - position.z);
         const float u = glm::dot(d, t), v = glm::dot(d, b);
-        // The octant of (u, v): the signs, then which is larger.
+        // The octant of (u, v): the signs, then which is larger; the ring by the distance in the plane.
         const std::uint32_t sector = (u < 0.0f ? 4u : 0u) | (v < 0.0f ? 2u : 0u) | (fabsf(u) < fabsf(v) ? 1u : 0u);
-        sectors |= 1u << sector;
+        const std::uint32_t ring = 2.0f * (u * u + v * v) < r2 ? 0u : 8u;
+        cells |= 1u << (sector + ring);
     }
     std::uint32_t covered = 0;
-    for (std::uint32_t s = 0; s < 8; ++s) covered += (sectors >> s) & 1u;
-    return static_cast<float>(covered) / 8.0f;
+    for (std::uint32_t c = 0; c < 16; ++c) covered += (cells >> c) & 1u;
+    const float expected = 1.0f - powf(15.0f / 16.0f, static_cast<float>(found));
+    const float share = static_cast<float>(covered) / (16.0f * expected);
+    return share < 1.0f ? share : 1.0f;
 }
 
 // The estimate from the `found` photons a k-nearest search left in the heap (the k-th distance
@@ -403,7 +408,10 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
                        : knn_search(map, position, k, limit, EuclideanMetric{}, on_plane, heap);
         };
         const std::uint32_t found = search_from_hint(search, k, radius_hint, params.max_radius);
-        return estimate_from_found(map, heap, found, k, albedo, params, covered_share(map, heap, found, position, normal));
+        const float r2 = found == 0 ? 0.0f
+                                    : (found < k && params.max_radius > 0.0f ? params.max_radius * params.max_radius
+                                                                              : heap.d2[0]);
+        return estimate_from_found(map, heap, found, k, albedo, params, covered_share(map, heap, found, position, normal, r2));
     }
 #if !defined(__CUDA_ARCH__)
     // With decoded vectors the filter decides 16 photons in a few SIMD steps (accepted16): cheaper

@@ -33,7 +33,8 @@ IrradiancePrecompute every_nth(std::uint32_t every) { return every_nth_photon_ir
 
 // Jensen's estimate by sorting every photon by distance: the k nearest that may light the
 // surface (the runtime's photon filter and plane test), r the k-th distance or the search limit,
-// the disc's area counted over the 45-degree sectors about the normal that hold a photon.
+// the disc's area counted over its 16 cells (45-degree sectors about the normal in two rings of
+// equal area) that hold a photon, over the share a full disc's photons would cover on average.
 // Returns false when the k-th and (k+1)-th distances tie (then the choice of photon is arbitrary).
 bool brute_force_irradiance(const PhotonMapView& map, std::uint32_t slot, const RadianceEstimateParams& params,
                             glm::vec3& out) {
@@ -57,15 +58,19 @@ bool brute_force_irradiance(const PhotonMapView& map, std::uint32_t slot, const 
     const float r2 = used == params.k ? near[used - 1].first : limit2;
     glm::vec3 flux(0.0f), t, b;
     tangent_frame(glm::vec3(n[0], n[1], n[2]), t, b);
-    bool sector[8] = {};
+    bool cell[16] = {};
     for (std::size_t i = 0; i < used; ++i) {
         const std::uint32_t j = near[i].second;
         flux += photon_power(map.power[j]);
         const glm::vec3 d = glm::vec3(map.x[j], map.y[j], map.z[j]) - p;
-        const double angle = std::atan2(glm::dot(d, b), glm::dot(d, t));  // (-pi, pi]
-        sector[static_cast<int>(std::floor((angle + kPi) / (kPi / 4.0))) & 7] = true;
+        const double u = glm::dot(d, t), v = glm::dot(d, b);
+        const double angle = std::atan2(v, u);  // (-pi, pi]
+        const int ring = u * u + v * v < 0.5 * r2 ? 0 : 8;
+        cell[(static_cast<int>(std::floor((angle + kPi) / (kPi / 4.0))) & 7) + ring] = true;
     }
-    const double share = used >= 32 ? static_cast<double>(std::count(sector, sector + 8, true)) / 8.0 : 1.0;
+    const double full = 1.0 - std::pow(15.0 / 16.0, static_cast<double>(used));
+    const double share =
+        used >= 32 ? std::min(1.0, static_cast<double>(std::count(cell, cell + 16, true)) / (16.0 * full)) : 1.0;
     out = used == 0 ? glm::vec3(0.0f) : flux / static_cast<float>(kPi * r2 * share);
     REQUIRE(params.plane_distance > 0.0f);
     return true;

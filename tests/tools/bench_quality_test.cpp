@@ -77,6 +77,23 @@ TEST_CASE("kdpm-bench-quality measures error against time and caches its referen
     for (const char* mode : {"photons", "direct+photons", "final-gather + cache", "final-gather, no cache", "sppm"})
         CHECK_THAT(first.output, Catch::Contains(std::string("\n") + mode + " "));
     CHECK_THAT(first.output, Catch::Contains("equal time (<= 1000 s)") && Catch::Contains("sppm curve (relMSE): 1 pass"));
+    CHECK_THAT(first.output, Catch::Contains("relMSE at equal time") && Catch::Contains("where the error is"));
+    // Each mode's picture: test | reference | error, three images wide.
+    for (const char* picture : {"cornell-box-path.png", "cornell-box-final-gather-cache.png", "cornell-box-sppm.png"}) {
+        INFO(picture);
+        const fs::path file = dir / "work" / "pictures" / picture;
+        REQUIRE(fs::exists(file));
+        // The PNG's IHDR: width and height, big-endian, at bytes 16 and 20.
+        std::ifstream png(file, std::ios::binary);
+        unsigned char header[24] = {};
+        png.read(reinterpret_cast<char*>(header), sizeof header);
+        auto be32 = [&](int at) {
+            return (std::uint32_t(header[at]) << 24) | (std::uint32_t(header[at + 1]) << 16) |
+                   (std::uint32_t(header[at + 2]) << 8) | std::uint32_t(header[at + 3]);
+        };
+        CHECK(be32(16) == 96u);
+        CHECK(be32(20) == 32u);
+    }
     const std::vector<fs::path> cached = references(dir / "work");
     REQUIRE(cached.size() == 1);
     const FileStamp before = stamp(cached.front());
@@ -92,12 +109,12 @@ TEST_CASE("kdpm-bench-quality measures error against time and caches its referen
     CHECK(path_relmse(second.output) == relmse);
 
     // Another key (fewer reference samples): another reference, rendered; the first stays.
-    // Its photon map with unlimited bounces, as the reference's (the first had the card's).
-    CHECK_THAT(first.output, Catch::Contains("photons of up to 4 bounces"));
-    const auto third = test::run_tool(base + " --scenes cornell-box --reference-spp 128 --photon-bounces 0");
+    // Its photon map with the report's 4 bounces (the first had the card's, unlimited in practice).
+    CHECK_THAT(first.output, Catch::Contains("photons of up to 63 bounces"));
+    const auto third = test::run_tool(base + " --scenes cornell-box --reference-spp 128 --photon-bounces 4");
     INFO(third.output);
     REQUIRE(third.exit_code == 0);
-    CHECK_THAT(third.output, Catch::Contains("rendered in") && Catch::Contains("photons of up to 63 bounces"));
+    CHECK_THAT(third.output, Catch::Contains("rendered in") && Catch::Contains("photons of up to 4 bounces"));
     CHECK(references(dir / "work").size() == 2);
 
     // A damaged cache file is refused in one line, and left as it is.
@@ -116,7 +133,7 @@ TEST_CASE("kdpm-bench-quality refuses bad options in one line", "[tools][bench]"
     const std::string base = "kdpm-bench-quality --scenes cornell-box --repo " + test::source_path("") + " --work " +
                              (dir / "work").string() + " --size 8 --reference-spp 1 --max-rungs 1 --photons 100 --quiet ";
     for (const char* bad : {"--size 0", "--seconds -1", "--threads 0", "--reference-spp x", "--reference-backend gpu",
-                            "--photon-bounces 256", "--no-such-option"}) {
+                            "--photon-bounces 256", "--budgets 0", "--budgets 1,x", "--budgets ,", "--no-such-option"}) {
         const auto r = test::run_tool(base + bad);
         INFO(bad << ": " << r.output);
         CHECK(r.exit_code == 2);

@@ -11,6 +11,7 @@
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/cuda_device.h"
 #include "runtime/backend/thread_limit.h"
+#include "runtime/render/default_mode.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
 #include "tools/cli/progress.h"
@@ -43,17 +44,20 @@ py::array_t<T> image_array(const std::vector<T>& values, int height, int width, 
     return out;
 }
 
-py::object render(const PyGeometryFile& geometry, const py::object& photons, const std::string& mode, int spp,
+py::object render(const PyGeometryFile& geometry, const py::object& photons, const py::object& mode, int spp,
                   int width, int height, int k, const py::object& max_radius, int light_samples, int max_depth,
                   int max_bounces, const py::object& passes, int gather_rays, const std::string& gather_lookup,
                   bool irradiance_cache,
                   const py::object& camera, const std::vector<std::string>& aovs, const std::string& backend,
                   int threads, bool quiet) {
     RenderSettings settings;
-    settings.mode = parse_render_mode(mode);
     const PyPhotonMapFile* maps = photons.is_none() ? nullptr : &photons.cast<const PyPhotonMapFile&>();
+    // None: kdpm-render's default for these files (default_mode.h).
+    settings.mode = mode.is_none() ? default_render_mode(scene_views_of(geometry.file, maps ? &maps->file : nullptr))
+                                   : parse_render_mode(mode.cast<std::string>());
     if (mode_needs_photons(settings.mode) && !maps)
-        throw py::value_error("mode " + mode + " reads a photon map: pass photons=kdpm.PhotonMapFile(...)");
+        throw py::value_error(std::string("mode ") + render_mode_name(settings.mode) +
+                              " reads a photon map: pass photons=kdpm.PhotonMapFile(...)");
     check_range("spp", spp, 1, 4096);
     check_range("width", width, 0, kMaxImageSide);
     check_range("height", height, 0, kMaxImageSide);
@@ -124,7 +128,7 @@ py::object render(const PyGeometryFile& geometry, const py::object& photons, con
 void bind_render(py::module_& m) {
     const RenderSettings defaults;
     m.def("render", &render, py::arg("geometry"), py::arg("photons") = py::none(), py::kw_only(),
-          py::arg("mode") = "photons", py::arg("spp") = defaults.spp, py::arg("width") = 0, py::arg("height") = 0,
+          py::arg("mode") = py::none(), py::arg("spp") = defaults.spp, py::arg("width") = 0, py::arg("height") = 0,
           py::arg("k") = 0, py::arg("max_radius") = py::none(), py::arg("light_samples") = defaults.light_samples,
           py::arg("max_depth") = defaults.max_depth, py::arg("max_bounces") = defaults.max_bounces,
           py::arg("passes") = py::none(), py::arg("gather_rays") = defaults.gather_rays,
@@ -132,7 +136,8 @@ void bind_render(py::module_& m) {
           py::arg("irradiance_cache") = defaults.irradiance_cache, py::arg("camera") = py::none(),
           py::arg("aovs") = std::vector<std::string>{}, py::arg("backend") = "cpu", py::arg("threads") = 0,
           py::arg("quiet") = false,
-          "Renders a frame as kdpm-render does: linear radiance as a float32 (H, W, 3) array, row 0 at the top. "
+          "Renders a frame as kdpm-render does: linear radiance as a float32 (H, W, 3) array, row 0 at the top; "
+          "mode None: kdpm-render's default (final-gather with an irradiance map, photons, or direct). "
           "With aovs (depth, normal, position, triangle), a dict of 'color' and those arrays. width/height/k 0: "
           "the file's; camera: a dict overriding eye, lookat, up, vfov.");
 }

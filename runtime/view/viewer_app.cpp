@@ -12,6 +12,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "runtime/render/default_mode.h"
 #include "runtime/render/frame_memory.h"
 #include "runtime/render/image/image_output.h"
 #include "runtime/render/image_size.h"
@@ -51,7 +52,7 @@ public:
         photons_ = scene.views().photons;
         const std::uint32_t scene_k = scene.views().geometry.info.default_k;
         options_.k = clamp_k(cfg.k ? cfg.k : (scene_k ? scene_k : 100));
-        options_.mode = cfg.mode ? *cfg.mode : (have_photons_ ? RenderMode::photons : RenderMode::direct);
+        options_.mode = cfg.mode ? *cfg.mode : default_render_mode(scene.views());
         options_.view = cfg.view;
         options_.exposure_stops = cfg.exposure_stops;
         options_.tone_map = cfg.tone_map;

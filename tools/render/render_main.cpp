@@ -13,6 +13,7 @@
 #include "formats/scene_limits.h"
 #include "runtime/backend/backend_kind.h"
 #include "runtime/backend/thread_limit.h"
+#include "runtime/render/default_mode.h"
 #include "runtime/render/image/image_output.h"
 #include "runtime/render/renderer.h"
 #include "runtime/render/scene_loader.h"
@@ -68,7 +69,7 @@ int run(int argc, char** argv) {
         .positional("scene.kdp", &photon_path, "photon kd-tree from kdpm-build-photons (not needed for --mode direct)",
                     false)
         .option("output", &output, "FILE", "output image, format by extension (.png, .exr, ...)");
-    cli::add_render_options(args, common, "photons (all light from the photon map)");
+    cli::add_render_options(args, common, kDefaultModeText);
     args.option("spp", &spp, "N", "camera samples per pixel (default 1: pixel centres)", 1, 4096)
         .option("max-radius", &max_radius, "R",
                 "photon search limit (default: automatic, 4x the photon map's typical k-radius; 0: none)", 0.0, 1e30)
@@ -121,11 +122,11 @@ int run(int argc, char** argv) {
     cli::add_camera_options(args, common.camera);
     args.short_name('o', "output");
     args.parse(argc, argv);
-    if (common.mode) settings.mode = *common.mode;
     settings.post.tone_map = common.tone_map;
     const bool quiet = common.quiet;
     if (output.empty()) throw std::runtime_error("no output file given (-o out.png)");
-    if (settings.mode != RenderMode::sppm && (passes || photons_per_pass || sppm_radius > 0.0))
+    // The default is never sppm: refused before any file is read.
+    if (!(common.mode && *common.mode == RenderMode::sppm) && (passes || photons_per_pass || sppm_radius > 0.0))
         throw std::invalid_argument("--passes, --photons-per-pass and --sppm-radius are for --mode sppm");
     // Refuse an impossible destination (or one that is an input) before spending time on the frame.
     std::vector<std::filesystem::path> inputs{geometry_path};
@@ -139,6 +140,7 @@ int run(int argc, char** argv) {
     std::optional<std::filesystem::path> photons;
     if (!photon_path.empty()) photons = photon_path;
     LoadedScene scene = LoadedScene::load(geometry_path, photons);
+    settings.mode = common.mode ? *common.mode : default_render_mode(scene.views());
     settings.camera = common.camera.applied_to(scene.views().camera);
     const GeometryInfo& bounds = scene.views().geometry.info;
     if (radius_too_small(max_radius, bounds.bounds_min, bounds.bounds_max))

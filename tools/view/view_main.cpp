@@ -6,6 +6,7 @@
 
 #include "formats/output_file.h"
 #include "runtime/backend/thread_limit.h"
+#include "runtime/render/default_mode.h"
 #include "runtime/view/viewer_config.h"
 #include "tools/cli/args.h"
 #include "tools/cli/render_options.h"
@@ -22,7 +23,7 @@ int run(int argc, char** argv) {
     cli::Args args("kdpm-view", "Interactive viewer for a kdpm scene (geometry kd-tree + optional photon kd-tree).");
     args.positional("scene.kdg", &cfg.geometry_path, "geometry kd-tree from kdpm-build-geometry")
         .positional("scene.kdp", &cfg.photon_path, "photon kd-tree from kdpm-build-photons (optional)", false);
-    cli::add_render_options(args, common, "photons with a .kdp, else direct");
+    cli::add_render_options(args, common, kDefaultModeText);
     args.option("view", "VIEW", "shaded (default), depth, normal or density (photon density; needs a .kdp)",
                 [&](const std::string& v) { cfg.view = parse_view(v); })
         .option("spp", &spp, "N", "progressive refinement stops at N samples per pixel (default 16)", 1, 4096)

@@ -1,6 +1,7 @@
 #pragma once
 // Direct light from the area lights at a diffuse point, by shadow rays to stratified points on
-// the lights (Monte Carlo estimate of the irradiance integral; one-sided emitters).
+// the lights (Monte Carlo estimate of the irradiance integral; one-sided emitters): uniform in
+// the solid angle for rectangles (spherical_rectangle.h), uniform in area otherwise.
 #include <cstdint>
 
 #include <glm/geometric.hpp>
@@ -14,8 +15,20 @@
 #include "runtime/shading/area_light.h"
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"
+#include "runtime/shading/spherical_rectangle.h"
 
 namespace kdpm {
+
+// Rectangles seen under less than this are sampled by area: far away both ways are alike, and
+// the spherical rectangle's angles lose float precision as it shrinks.
+inline constexpr float kMinSampledSolidAngle = 0.02f;
+
+// A card light whose edges are perpendicular (within float noise): sampled in solid angle.
+KDPM_HD KDPM_INLINE bool is_rectangle(const AreaLightRecord& l) {
+    if (l.shape != static_cast<std::uint32_t>(LightShape::parallelogram)) return false;
+    const glm::vec3 e1 = to_vec3(l.e1), e2 = to_vec3(l.e2);
+    return fabsf(glm::dot(e1, e2)) <= 1e-4f * glm::length(e1) * glm::length(e2);
+}
 
 // Shadow ray j of direct_light_with and the irradiance it brings if unoccluded; false where the
 // sample brings none whatever lies between (no light picked, the light behind x or facing away).
@@ -37,7 +50,11 @@ KDPM_HD KDPM_INLINE bool light_sample(const GeometryView& g, const LightSelectio
     const float a = single ? (static_cast<float>(j % side) + ra) / side : ra;
     const float b = single ? (static_cast<float>(j / side) + rb) / side : rb;
     const glm::vec3 light_n = light_normal(l);
-    const glm::vec3 d = point_on_light(l, a, b) - origin;
+    SphericalRectangle q;
+    const bool in_solid_angle = is_rectangle(l) && glm::dot(origin - to_vec3(l.p0), light_n) > 0.0f &&
+                                spherical_rectangle(origin, to_vec3(l.p0), to_vec3(l.e1), to_vec3(l.e2), q) &&
+                                q.solid_angle > kMinSampledSolidAngle;
+    const glm::vec3 d = (in_solid_angle ? q.point(a, b) : point_on_light(l, a, b)) - origin;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return false;
     const glm::vec3 wi = d / glm::sqrt(dist2);
@@ -46,7 +63,9 @@ KDPM_HD KDPM_INLINE bool light_sample(const GeometryView& g, const LightSelectio
     if (cos_x <= 0.0f || cos_y <= 0.0f) return false;
     // The segment stops just short of the light, which may itself be scene geometry.
     shadow = Ray{origin, 0.0f, d, 1.0f - 1e-4f};
-    irradiance = to_vec3(l.radiance) * (cos_x * cos_y / dist2 * l.area / probability);
+    // Uniform in solid angle the weight is the solid angle; uniform in area, cos_y A / d^2.
+    const float weight = in_solid_angle ? q.solid_angle : cos_y / dist2 * l.area;
+    irradiance = to_vec3(l.radiance) * (cos_x * weight / probability);
     return true;
 }
 

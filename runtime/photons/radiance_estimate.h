@@ -354,11 +354,12 @@ KDPM_HD inline float covered_share(const PhotonMapView& map, const KnnHeap& heap
     return share < 1.0f ? share : 1.0f;
 }
 
-// The estimate from the `found` photons a k-nearest search left in the heap (the k-th distance
-// first), as estimate_radiance makes it.
+// The estimate at (position, normal) from the `found` photons a k-nearest search left in the
+// heap (the k-th distance first), as estimate_radiance makes it; with the plane test, over the
+// disc's covered share.
 KDPM_HD inline RadianceEstimate estimate_from_found(const PhotonMapView& map, const KnnHeap& heap, std::uint32_t found,
-                                                    std::uint32_t k, glm::vec3 albedo,
-                                                    const RadianceEstimateParams& params, float area_share = 1.0f) {
+                                                    std::uint32_t k, glm::vec3 position, glm::vec3 normal,
+                                                    glm::vec3 albedo, const RadianceEstimateParams& params) {
     RadianceEstimate out;
     out.count = found;
     if (found == 0) return out;
@@ -375,6 +376,7 @@ KDPM_HD inline RadianceEstimate estimate_from_found(const PhotonMapView& map, co
         for (std::uint32_t i = 0; i < found; ++i) flux += power_of(map, heap.index[i]);  // w = 1
     }
     const float norm = params.cone_filter ? cone_norm(cone_k) : 1.0f;
+    const float area_share = params.plane_distance > 0.0f ? covered_share(map, heap, found, position, normal, r2) : 1.0f;
     out.radiance = lambert_brdf(albedo) * flux / (kPi * r2 * norm * area_share);
     out.radius = r;
     return out;
@@ -397,43 +399,37 @@ KDPM_HD inline RadianceEstimate estimate_radiance(const PhotonMapView& map, glm:
     const SurfacePhotonFilter filter(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
     if (params.fixed_radius) return estimate_radiance_in_radius(map, position, albedo, params, filter);
     const std::uint32_t k = clamp_gather_k(params.k);
+    // One search per filter kind, along the sphere or the flattened disc.
+    auto search_with = [&](const auto& accept, float limit) {
+        return params.flatten > 0.0f
+                   ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, accept, heap)
+                   : knn_search(map, position, k, limit, EuclideanMetric{}, accept, heap);
+    };
+    std::uint32_t found = 0;
     if (params.plane_distance > 0.0f) {
         // The plane test on top of the surface filter; no memo (it remembers the surface filter's
         // decisions alone).
         const OnPlaneFilter<SurfacePhotonFilter> on_plane{filter, map.x, map.y, map.z, position, normal,
                                                           params.plane_distance};
-        auto search = [&](float limit) {
-            return params.flatten > 0.0f
-                       ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, on_plane, heap)
-                       : knn_search(map, position, k, limit, EuclideanMetric{}, on_plane, heap);
-        };
-        const std::uint32_t found = search_from_hint(search, k, radius_hint, params.max_radius);
-        const float r2 = found == 0 ? 0.0f
-                                    : (found < k && params.max_radius > 0.0f ? params.max_radius * params.max_radius
-                                                                              : heap.d2[0]);
-        return estimate_from_found(map, heap, found, k, albedo, params, covered_share(map, heap, found, position, normal, r2));
+        found = search_from_hint([&](float limit) { return search_with(on_plane, limit); }, k, radius_hint,
+                                 params.max_radius);
+    } else {
+#if !defined(__CUDA_ARCH__)
+        // With decoded vectors the filter decides 16 photons in a few SIMD steps (accepted16):
+        // cheaper than looking up remembered decisions one photon at a time.
+        if (map.unpacked) memo = nullptr;
+        if (memo) memo->use_for(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
+#endif
+        found = search_from_hint(
+            [&](float limit) {
+#if !defined(__CUDA_ARCH__)
+                if (memo) return search_with(MemoizedFilter<SurfacePhotonFilter>{&filter, memo}, limit);
+#endif
+                return search_with(filter, limit);
+            },
+            k, radius_hint, params.max_radius);
     }
-#if !defined(__CUDA_ARCH__)
-    // With decoded vectors the filter decides 16 photons in a few SIMD steps (accepted16): cheaper
-    // than looking up remembered decisions one photon at a time.
-    if (map.unpacked) memo = nullptr;
-    if (memo) memo->use_for(map, normal, params.min_normal_cos, params.min_bounce, params.exclude_flags);
-#endif
-    auto search = [&](float limit) {
-#if !defined(__CUDA_ARCH__)
-        if (memo) {
-            const MemoizedFilter<SurfacePhotonFilter> memoized{&filter, memo};
-            return params.flatten > 0.0f
-                       ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, memoized, heap)
-                       : knn_search(map, position, k, limit, EuclideanMetric{}, memoized, heap);
-        }
-#endif
-        return params.flatten > 0.0f
-                   ? knn_search(map, position, k, limit, DiscMetric{normal, params.flatten}, filter, heap)
-                   : knn_search(map, position, k, limit, EuclideanMetric{}, filter, heap);
-    };
-    const std::uint32_t found = search_from_hint(search, k, radius_hint, params.max_radius);
-    return estimate_from_found(map, heap, found, k, albedo, params);
+    return estimate_from_found(map, heap, found, k, position, normal, albedo, params);
 }
 
 // estimate_radiance started from the bound the hints give at `position` on the surface of

@@ -36,14 +36,13 @@ std::vector<double> parse_budgets(const std::string& text) {
     std::stringstream list(text);
     std::string item;
     while (std::getline(list, item, ',')) {
-        std::size_t used = 0;
         double v = 0;
         try {
-            v = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
+            v = cli::parse_finite(item);
+        } catch (const std::invalid_argument&) {
+            v = 0;  // refused below
         }
-        if (used != item.size() || item.empty() || !(v > 0.0 && v <= 1e6))
+        if (!(v > 0.0 && v <= 1e6))
             throw std::invalid_argument("budgets are seconds in (0, 1e6] separated by commas, got '" + item + "'");
         out.push_back(v);
     }

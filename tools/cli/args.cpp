@@ -12,7 +12,6 @@
 #include "tools/cli/version_text.h"
 
 namespace kdpm::cli {
-namespace {
 
 double parse_finite(const std::string& v) {
     char* end = nullptr;
@@ -20,6 +19,8 @@ double parse_finite(const std::string& v) {
     if (v.empty() || *end != '\0' || !std::isfinite(x)) throw std::invalid_argument("'" + v + "' is not a finite number");
     return x;
 }
+
+namespace {
 
 // CLI11 names a positional by its meta; it accepts only some characters there.
 std::string positional_name(const std::string& meta) {

@@ -17,6 +17,9 @@ class App;
 
 namespace kdpm::cli {
 
+// The whole text as a finite number, as the options read them; throws std::invalid_argument.
+double parse_finite(const std::string& text);
+
 class Args {
 public:
     Args(std::string program, std::string summary);

@@ -43,14 +43,13 @@ AovSet parse_aovs(const std::string& text) {
 
 // --ic-accuracy: a number in (0, 1].
 float parse_ic_accuracy(const std::string& text) {
-    std::size_t used = 0;
     float a = 0.0f;
     try {
-        a = std::stof(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
+        a = static_cast<float>(cli::parse_finite(text));
+    } catch (const std::invalid_argument&) {
+        a = 0.0f;  // refused below
     }
-    if (used != text.size() || !(a > 0.0f && a <= 1.0f))
+    if (!(a > 0.0f && a <= 1.0f))
         throw std::invalid_argument("expected a number in (0, 1], got '" + text + "'");
     return a;
 }

@@ -123,3 +123,43 @@ TEST_CASE("direct light from shadow-ray packets equals one shadow ray at a time"
     CHECK(lit > 1000);
     CHECK(shadowed > 1000);
 }
+
+TEST_CASE("a dim light right beside the point gets its share of shadow rays, not its share of power",
+          "[render][lights]") {
+    // A 2 x 2 light 3 units above the point and a 1 cm light 2 cm above it, equally bright: the
+    // small one has 1/40000 of the power but gives a third of the irradiance. Picked by power
+    // alone it is met once in ~2500 estimates of 16 rays, then weighs 40000: the estimates'
+    // spread is many times their mean (20x here).
+    test::HandBuiltScene scene;
+    scene.add_quad({-10, 0, -10}, {0, 0, 20}, {20, 0, 0}, scene.add_material(glm::vec3(0.5f)));
+    const glm::vec3 big_p0(-1.0f, 3.0f, -1.0f), big_e1(2, 0, 0), big_e2(0, 0, 2);
+    const glm::vec3 small_p0(-0.005f, 0.02f, -0.005f), small_e1(0.01f, 0, 0), small_e2(0, 0, 0.01f);
+    scene.add_parallelogram_light(big_p0, big_e1, big_e2, glm::vec3(10.0f));
+    scene.add_parallelogram_light(small_p0, small_e1, small_e2, glm::vec3(10.0f));
+    scene.set_camera({0, 2, 0.01f}, {0, 0, 0}, {0, 0, 1}, 5.0f, 1, 1);
+    SceneViews views = scene.views();
+    const GeometryView& g = views.geometry;
+    const LightPowerTable table = light_power_table(g);
+    const LightSelection lights = table.selection();
+    REQUIRE(lights.count == 2);
+    auto corners = [](glm::vec3 p0, glm::vec3 e1, glm::vec3 e2) {
+        return std::vector<glm::dvec3>{glm::dvec3(p0), glm::dvec3(p0 + e1), glm::dvec3(p0 + e1 + e2), glm::dvec3(p0 + e2)};
+    };
+    const double small = polygon_irradiance(corners(small_p0, small_e1, small_e2), glm::dvec3(0.0), glm::dvec3(0, 1, 0), 10.0);
+    const double truth = small + polygon_irradiance(corners(big_p0, big_e1, big_e2), glm::dvec3(0.0), glm::dvec3(0, 1, 0), 10.0);
+    REQUIRE(small > 0.25 * truth);
+    const glm::vec3 n(0, 1, 0), origin = offset_origin(glm::vec3(0.0f), n, render_ray_offset(g.info), true);
+    const int estimates = 2000;
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < estimates; ++i) {
+        // albedo pi: the irradiance itself.
+        const glm::vec3 e = direct_light_with(g, lights, origin, n, glm::vec3(3.14159265f), 16,
+                                              ShadingRandom{static_cast<std::uint32_t>(i), 7u});
+        sum += e.x;
+        sum2 += static_cast<double>(e.x) * e.x;
+    }
+    const double mean = sum / estimates, spread = std::sqrt(std::max(0.0, sum2 / estimates - mean * mean));
+    INFO("truth " << truth << ", mean " << mean << ", spread of a 16-ray estimate " << spread);
+    CHECK(mean == Approx(truth).epsilon(0.03));
+    CHECK(spread < 0.5 * truth);
+}

@@ -137,7 +137,8 @@ void run_gather_frame(Device& dev, const GeometryView& geometry, const LightSele
             PhotonGatherPass gather = gather_template;
             gather.frame = fb;
             if (final_gather && plan.irradiance_cache)
-                run_cached_gather(dev, cache, make_final_gather_pass(geometry, lights, gather, s, plan.settings, plan.epsilon));
+                run_cached_gather(dev, cache, make_final_gather_pass(geometry, lights, gather, s, plan.settings, plan.epsilon),
+                                  plan.camera);
             else if (final_gather)
                 dev.launch(pixels, make_final_gather_pass(geometry, lights, gather, s, plan.settings, plan.epsilon));
             else if constexpr (gathers_by_tile_v<Device>)

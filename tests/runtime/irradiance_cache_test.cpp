@@ -75,7 +75,28 @@ TEST_CASE("the record tree finds exactly the records a brute-force scan finds va
         REQUIRE(found == expected);
         found_total += found.size();
     }
-    CHECK(found_total > 300);  // the queries do find records
+    CHECK(found_total > 100);  // the queries do find records (radii clamped by their neighbours)
+}
+
+TEST_CASE("a small record clamps its neighbours' radii by their distance, both ways and in later batches",
+          "[render][irradiance-cache]") {
+    const glm::vec3 up(0, 0, 1), e(1.0f);
+    IrradianceRecordTree tree(0.2f);
+    tree.add({record_at({0, 0, 0}, up, 1.0f, e), record_at({5, 0, 0}, up, 1.0f, e)});
+    CHECK(tree.records()[0].radius == 1.0f);  // 5 apart: neither clamps the other
+    // Out in the open the big record is valid at x = 0.19; then a small one appears at x = 0.3.
+    glm::vec3 unused;
+    REQUIRE(tree.view().interpolate({0.19f, 0, 0}, up, unused));
+    tree.add({record_at({0.3f, 0, 0}, up, 0.01f, e), record_at({0.4f, 0, 0}, up, 2.0f, e)});
+    const auto& r = tree.records();
+    CHECK(r[0].radius == Approx(0.31f));  // the old record, by the new small one
+    CHECK(r[3].radius == Approx(0.11f));  // a new record, by the small one beside it
+    CHECK(r[2].radius == Approx(0.01f));
+    CHECK(r[1].radius == 1.0f);           // 4.6 from the small one: R 1 < 0.01 + 4.6
+    // The tree was rebuilt over the clamped spheres: reach 0.2 * 0.31 no longer gets to 0.19.
+    std::vector<std::uint32_t> valid;
+    tree.view().for_each_valid({0.19f, 0, 0}, up, [&](std::uint32_t i, float) { valid.push_back(i); });
+    CHECK(valid.empty());
 }
 
 TEST_CASE("records on a flat plane interpolate uniform and linearly varying irradiance exactly",

@@ -11,7 +11,7 @@ namespace kdpm {
 
 struct IrradianceRecord {
     glm::vec3 position;
-    float radius = 0.0f;          // R_i: harmonic mean distance to the gather hits (clamped)
+    float radius = 0.0f;          // R_i: the nearest gather hit's distance, clamped (irradiance_record_pass.h)
     glm::vec3 normal;             // unit geometric normal, the gather rays' axis
     glm::vec3 irradiance;         // E_i, per channel
     glm::vec3 rotation[3];        // dE_c / d(rotation axis) for channel c: E(n) ~ E_i + (n_i x n) . rotation[c]
@@ -25,8 +25,9 @@ KDPM_HD KDPM_INLINE float record_error(const IrradianceRecord& r, const glm::vec
     if (!(c > 0.0f)) return -1.0f;
     const glm::vec3 d = p - r.position;
     // Ward's "in front" test: a record standing in front of p (p behind its surface) sees a
-    // different hemisphere.
-    if (glm::dot(d, n + r.normal) * 0.5f < -0.05f * r.radius) return -1.0f;
+    // different hemisphere: a step's top must not light the floor at its foot. Measured along
+    // the mean normal, p - p_i is level on a sphere, so the tolerance only absorbs facets.
+    if (glm::dot(d, n + r.normal) * 0.5f < -0.01f * r.radius) return -1.0f;
     const float s = 1.0f - c;
     return glm::length(d) / r.radius + sqrtf(s > 0.0f ? s : 0.0f);
 }

@@ -1,8 +1,8 @@
 #pragma once
 // Makes irradiance cache records: at each given diffuse vertex, the final gather's rays over a
 // stratified cosine-weighted hemisphere (M rows in sin^2 theta, N columns in phi, N ~ pi M,
-// M N <= gather rays), giving the irradiance, the harmonic mean distance to the hits and Ward
-// & Heckbert's rotational and translational gradients from the differences between neighbouring
+// M N <= gather rays), giving the irradiance, the nearest hit's distance and Ward & Heckbert's
+// rotational and translational gradients from the differences between neighbouring
 // strata (translation: each stratum wall moves as the point moves, by 1 / (R sin theta) across
 // a phi wall and cos theta / R across a theta wall; the nearer of the two hits is assumed).
 #include <cmath>
@@ -35,7 +35,14 @@ struct IrradianceRecordPass {
     FinalGatherPass gather;               // geometry, maps and estimate parameters, rays per record
     const std::uint64_t* slots = nullptr;  // vertex slots to make a record at
     IrradianceRecord* records = nullptr;   // one per slot
-    float min_radius = 0.0f, max_radius = 1e30f;
+    float min_radius = 0.0f, max_radius = 1e30f;  // scene-wide clamp of R_i
+    // The record's smallest R_i from the camera: a record then covers at least min_reach_pixels
+    // of the image around it (Tabellion & Lamorlette 2004's minimum spacing), however near the
+    // geometry. The footprint of a pixel at p is |p - eye| * pixel_spread (0: no such bound).
+    glm::vec3 eye{0.0f};
+    float pixel_spread = 0.0f;
+    float min_reach_pixels = 0.0f;
+    float accuracy = 1.0f;  // the cache's a: a record reaches a * R_i
 
     KDPM_HD void operator()(std::uint64_t item) const {
         const std::uint64_t slot = slots[item];
@@ -53,10 +60,16 @@ struct IrradianceRecordPass {
         float previous_row_d[kMaxRecordColumns];
         glm::vec3 sum(0.0f), rotation[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
         glm::vec3 translation[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-        float inverse_distances = 0.0f;
+        float nearest_hit = std::numeric_limits<float>::infinity();
         const float m = static_cast<float>(rows), n = static_cast<float>(columns);
+        float smallest = min_radius;
+        if (pixel_spread > 0.0f) {
+            const float footprint = glm::length(v.position - eye) * pixel_spread;
+            const float r = min_reach_pixels * footprint / accuracy;
+            if (r > smallest) smallest = r < max_radius ? r : max_radius;
+        }
         // Hits closer than the smallest record radius would give gradients no record can use.
-        auto at_least = [&](float d) { return d > min_radius ? d : min_radius; };
+        auto at_least = [&](float d) { return d > smallest ? d : smallest; };
         auto add_difference = [&](const glm::vec3& axis, float coefficient, const glm::vec3& dl) {
             for (int c = 0; c < 3; ++c) translation[c] += axis * (coefficient * dl[c]);
         };
@@ -77,7 +90,7 @@ struct IrradianceRecordPass {
                 // Exactly grazing: no light.
                 if (glm::dot(dir, v.geometric_normal) > 0.0f) l = gather.follow(v, dir, path, ray, heap, d);
                 sum += l;
-                if (d < std::numeric_limits<float>::infinity() && d > 0.0f) inverse_distances += 1.0f / d;
+                if (d > 0.0f && d < nearest_hit) nearest_hit = d;
                 const glm::vec3 around = -sinf(phi) * t + cosf(phi) * b;
                 for (int c = 0; c < 3; ++c) rotation[c] += around * (l[c] * sin_t / cos_t);
                 if (j > 0) {
@@ -120,8 +133,10 @@ struct IrradianceRecordPass {
             r.rotation[c] = rotation[c] * cell;
             r.translation[c] = translation[c];
         }
-        const float harmonic = inverse_distances > 0.0f ? m * n / inverse_distances : max_radius;
-        r.radius = harmonic < min_radius ? min_radius : (harmonic > max_radius ? max_radius : harmonic);
+        // The nearest hit, not Ward's harmonic mean: at a step's foot the step fills half the
+        // hemisphere while the records beside the step see it in a few rays; the harmonic mean
+        // of those rays is set by the room and lets such a record reach the foot.
+        r.radius = nearest_hit < smallest ? smallest : (nearest_hit > max_radius ? max_radius : nearest_hit);
         records[item] = r;
     }
 };

@@ -2,6 +2,10 @@
 // The irradiance cache's lookup structure: a kd-tree over the records' positions whose nodes
 // bound the records' valid spheres (radius accuracy * R_i), so a lookup descends only into
 // nodes whose bounds hold the query point. Built on the host; the view is plain data.
+//
+// Records added are clamped by their neighbours first (Krivanek et al. 2006): R_i <= R_j +
+// |p_i - p_j| for every pair, so a record made out in the open shrinks once one beside an
+// object says geometry is near, and no record reaches far past a smaller one.
 #include <cstdint>
 #include <vector>
 
@@ -14,6 +18,7 @@ namespace kdpm {
 
 struct IrradianceTreeNode {
     glm::vec3 lo, hi;              // bounds of the valid spheres below
+    glm::vec3 sphere_lo, sphere_hi;  // bounds of the spheres of radius R_i below (neighbour clamping)
     std::uint32_t first = 0;       // leaf: first index into order; inner: the right child
     std::uint32_t count = 0;       // leaf: records (> 0); inner: 0, the left child follows
 };
@@ -72,13 +77,16 @@ struct IrradianceTreeView {
 class IrradianceRecordTree {
 public:
     explicit IrradianceRecordTree(float accuracy) : accuracy_(accuracy) {}
-    // Appends records (in the given order) and rebuilds the tree over all of them.
+    // Appends records (in the given order), clamps the radii of the new records and of their
+    // neighbours, and rebuilds the tree over all of them.
     void add(const std::vector<IrradianceRecord>& records);
     const std::vector<IrradianceRecord>& records() const { return records_; }
     IrradianceTreeView view() const;
 
 private:
     void build(std::uint32_t begin, std::uint32_t end, int depth);
+    void rebuild();
+    void clamp_by_neighbours(std::uint32_t j);
 
     float accuracy_;
     std::vector<IrradianceRecord> records_;

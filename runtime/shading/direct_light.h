@@ -53,10 +53,19 @@ KDPM_HD KDPM_INLINE float shadow_light_probability(const LightSelection& lights,
 
 // Shadow ray j of direct_light_with and the irradiance it brings if unoccluded; false where the
 // sample brings none whatever lies between (no light picked, the light behind x or facing away).
+// The spherical rectangle of the last light sampled from one point: its set-up (four
+// normalizations, four arc cosines) depends only on the point and the light, and the shadow rays
+// of a point mostly pick the same light (always, with one).
+struct LightFrameMemo {
+    std::uint32_t light = 0xffffffffu;
+    bool in_solid_angle = false;
+    SphericalRectangle q;
+};
+
 template <class Random>
 KDPM_HD KDPM_INLINE bool light_sample(const GeometryView& g, const LightSelection& lights, const glm::vec3& origin,
                                       const glm::vec3& n, std::uint32_t j, std::uint32_t side, const Random& random,
-                                      Ray& shadow, glm::vec3& irradiance) {
+                                      Ray& shadow, glm::vec3& irradiance, LightFrameMemo* memo = nullptr) {
     const std::uint32_t total = side * side;
     // One light: its area is stratified on the grid. Several: the choice of light is
     // stratified instead (the point on it is then uniform, so that it stays independent of
@@ -71,10 +80,16 @@ KDPM_HD KDPM_INLINE bool light_sample(const GeometryView& g, const LightSelectio
     const float a = single ? (static_cast<float>(j % side) + ra) / side : ra;
     const float b = single ? (static_cast<float>(j / side) + rb) / side : rb;
     const glm::vec3 light_n = light_normal(l);
-    SphericalRectangle q;
-    const bool in_solid_angle = is_rectangle(l) && glm::dot(origin - to_vec3(l.p0), light_n) > 0.0f &&
-                                spherical_rectangle(origin, to_vec3(l.p0), to_vec3(l.e1), to_vec3(l.e2), q) &&
-                                q.solid_angle > kMinSampledSolidAngle;
+    LightFrameMemo local;
+    LightFrameMemo& m = memo ? *memo : local;
+    if (m.light != li) {
+        m.light = li;
+        m.in_solid_angle = is_rectangle(l) && glm::dot(origin - to_vec3(l.p0), light_n) > 0.0f &&
+                           spherical_rectangle(origin, to_vec3(l.p0), to_vec3(l.e1), to_vec3(l.e2), m.q) &&
+                           m.q.solid_angle > kMinSampledSolidAngle;
+    }
+    const bool in_solid_angle = m.in_solid_angle;
+    const SphericalRectangle& q = m.q;
     const glm::vec3 d = (in_solid_angle ? q.point(a, b) : point_on_light(l, a, b)) - origin;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return false;
@@ -107,11 +122,13 @@ KDPM_HD KDPM_INLINE glm::vec3 direct_light_with(const GeometryView& g, const Lig
     while (side * side < samples) ++side;
     const std::uint32_t total = side * side;
     glm::vec3 irradiance(0.0f);
+    LightFrameMemo memo;
 #if defined(__CUDA_ARCH__)
     for (std::uint32_t j = 0; j < total; ++j) {
         Ray shadow;
         glm::vec3 e;
-        if (light_sample(g, lights, origin, n, j, side, random, shadow, e) && !occluded(g, shadow)) irradiance += e;
+        if (light_sample(g, lights, origin, n, j, side, random, shadow, e, &memo) && !occluded(g, shadow))
+            irradiance += e;
     }
 #else
     for (std::uint32_t first = 0; first < total; first += kPacketRays) {
@@ -120,7 +137,7 @@ KDPM_HD KDPM_INLINE glm::vec3 direct_light_with(const GeometryView& g, const Lig
         glm::vec3 e[kPacketRays];
         for (std::uint32_t j = first; j < end; ++j) {
             Ray shadow;
-            if (light_sample(g, lights, origin, n, j, side, random, shadow, e[packet.count]))
+            if (light_sample(g, lights, origin, n, j, side, random, shadow, e[packet.count], &memo))
                 packet.set(packet.count++, shadow);
         }
         bool blocked[kPacketRays];

@@ -163,3 +163,38 @@ TEST_CASE("a dim light right beside the point gets its share of shadow rays, not
     CHECK(mean == Approx(truth).epsilon(0.03));
     CHECK(spread < 0.5 * truth);
 }
+
+TEST_CASE("the light frame a point's shadow rays share gives the samples a fresh set-up gives, bit for bit",
+          "[render][lights]") {
+    // Three rectangles: the choice of light changes from ray to ray, so the memo must set up anew
+    // whenever it does.
+    test::HandBuiltScene scene;
+    scene.add_quad({-5, 0, -5}, {0, 0, 10}, {10, 0, 0}, scene.add_material(glm::vec3(0.5f)));
+    scene.add_parallelogram_light({-1, 2, -1}, {2, 0, 0}, {0, 0, 1}, glm::vec3(4.0f));
+    scene.add_parallelogram_light({0.5f, 0.3f, 0.2f}, {0.3f, 0, 0}, {0, 0, 0.2f}, glm::vec3(9.0f));
+    scene.add_parallelogram_light({-1, 1, 1}, {0.5f, 0, 0}, {0, 0, 0.5f}, glm::vec3(6.0f));
+    const SceneViews views = scene.views();
+    const LightPowerTable power = light_power_table(views.geometry);
+    const LightSelection lights = power.selection();
+    REQUIRE(lights.count == 3);
+    const glm::vec3 n(0, 1, 0);
+    int changes = 0;
+    for (int point = 0; point < 50; ++point) {
+        const glm::vec3 origin(0.1f * point - 2.5f, 1e-3f, 0.05f * point - 1.0f);
+        const ShadingRandom random{static_cast<std::uint32_t>(point), 7u};
+        LightFrameMemo memo;
+        std::uint32_t last = 0xffffffffu;
+        for (std::uint32_t j = 0; j < 64; ++j) {
+            Ray a, b;
+            glm::vec3 ea(0.0f), eb(0.0f);
+            const bool sa = light_sample(views.geometry, lights, origin, n, j, 8, random, a, ea, &memo);
+            const bool sb = light_sample(views.geometry, lights, origin, n, j, 8, random, b, eb);
+            REQUIRE(sa == sb);
+            if (memo.light != last) ++changes, last = memo.light;
+            if (!sa) continue;
+            CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+            CHECK(std::memcmp(&ea, &eb, sizeof ea) == 0);
+        }
+    }
+    CHECK(changes > 200);  // the lights did alternate
+}

@@ -51,17 +51,17 @@ KDPM_HD KDPM_INLINE float shadow_light_probability(const LightSelection& lights,
            kUniformLightShare / static_cast<float>(lights.count);
 }
 
-// Shadow ray j of direct_light_with and the irradiance it brings if unoccluded; false where the
-// sample brings none whatever lies between (no light picked, the light behind x or facing away).
-// The spherical rectangle of the last light sampled from one point: its set-up (four
-// normalizations, four arc cosines) depends only on the point and the light, and the shadow rays
-// of a point mostly pick the same light (always, with one).
+// The spherical rectangle of the last light sampled from one point (one memo per point): its
+// set-up (four normalizations, four arc cosines) depends only on the point and the light, and
+// the shadow rays of a point mostly pick the same light (always, with one).
 struct LightFrameMemo {
     std::uint32_t light = 0xffffffffu;
     bool in_solid_angle = false;
     SphericalRectangle q;
 };
 
+// Shadow ray j of direct_light_with and the irradiance it brings if unoccluded; false where the
+// sample brings none whatever lies between (no light picked, the light behind x or facing away).
 template <class Random>
 KDPM_HD KDPM_INLINE bool light_sample(const GeometryView& g, const LightSelection& lights, const glm::vec3& origin,
                                       const glm::vec3& n, std::uint32_t j, std::uint32_t side, const Random& random,

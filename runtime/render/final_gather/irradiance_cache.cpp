@@ -45,7 +45,7 @@ void run_cached_gather(CpuDevice& dev, IrradianceCache& cache, const FinalGather
         make.eye = camera.eye;
         make.pixel_spread = camera.pixel_spread();
         make.min_reach_pixels = std::max(kMinRecordReachPixels, kMinRecordReach * static_cast<float>(camera.height));
-        make.accuracy = cache.tree.view().accuracy;
+        make.accuracy = cache.tree.accuracy();
         dev.launch(slots.size(), make);
         // A cancelled frame (the viewer's stale refinement) stops its loops part-way: records it
         // did not finish must not enter a cache that later frames keep.

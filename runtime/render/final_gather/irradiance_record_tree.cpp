@@ -18,7 +18,7 @@ void IrradianceRecordTree::add(const std::vector<IrradianceRecord>& records) {
     if (records.empty()) return;
     // In index order, so the radii do not depend on the thread count.
     for (auto j = first; j < records_.size(); ++j) clamp_by_neighbours(j);
-    rebuild();  // the valid spheres have shrunk
+    refit(0);  // the spheres have shrunk; the positions, and so the tree's shape, are the same
 }
 
 void IrradianceRecordTree::rebuild() {
@@ -31,18 +31,18 @@ void IrradianceRecordTree::rebuild() {
 // Every record i with |p_i - p_j| < max(R_i, R_j): the nodes whose R-spheres meet the ball of
 // radius R_j around p_j hold them all (p_j lies in the R-sphere of the first kind).
 void IrradianceRecordTree::clamp_by_neighbours(std::uint32_t j) {
-    std::vector<std::uint32_t> stack{0};
-    while (!stack.empty()) {
-        const IrradianceTreeNode& node = nodes_[stack.back()];
-        const auto self = stack.back();
-        stack.pop_back();
+    stack_.assign(1, 0u);
+    while (!stack_.empty()) {
+        const auto self = stack_.back();
+        const IrradianceTreeNode& node = nodes_[self];
+        stack_.pop_back();
         IrradianceRecord& rj = records_[j];
         const glm::vec3 nearest = glm::clamp(rj.position, node.sphere_lo, node.sphere_hi);
         const glm::vec3 gap = nearest - rj.position;
         if (glm::dot(gap, gap) > rj.radius * rj.radius) continue;
         if (node.count == 0) {
-            stack.push_back(node.first);
-            stack.push_back(self + 1);
+            stack_.push_back(node.first);
+            stack_.push_back(self + 1);
             continue;
         }
         for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
@@ -56,26 +56,48 @@ void IrradianceRecordTree::clamp_by_neighbours(std::uint32_t j) {
     }
 }
 
+// The node's bounds of the valid spheres and of the R-spheres of records order_[begin, end).
+void IrradianceRecordTree::bound(IrradianceTreeNode& node, std::uint32_t begin, std::uint32_t end) const {
+    node.lo = node.sphere_lo = glm::vec3(1e30f);
+    node.hi = node.sphere_hi = glm::vec3(-1e30f);
+    for (std::uint32_t i = begin; i < end; ++i) {
+        const IrradianceRecord& r = records_[order_[i]];
+        const glm::vec3 reach(accuracy_ * r.radius);
+        node.lo = glm::min(node.lo, r.position - reach);
+        node.hi = glm::max(node.hi, r.position + reach);
+        node.sphere_lo = glm::min(node.sphere_lo, r.position - glm::vec3(r.radius));
+        node.sphere_hi = glm::max(node.sphere_hi, r.position + glm::vec3(r.radius));
+    }
+}
+
+// The bounds again after the radii changed: the leaves' from their records, an inner node's
+// from its children (the same boxes a build over the same positions would make).
+void IrradianceRecordTree::refit(std::uint32_t self) {
+    IrradianceTreeNode& node = nodes_[self];
+    if (node.count > 0) {
+        bound(node, node.first, node.first + node.count);
+        return;
+    }
+    refit(self + 1);
+    refit(node.first);
+    const IrradianceTreeNode &left = nodes_[self + 1], &right = nodes_[node.first];
+    node.lo = glm::min(left.lo, right.lo);
+    node.hi = glm::max(left.hi, right.hi);
+    node.sphere_lo = glm::min(left.sphere_lo, right.sphere_lo);
+    node.sphere_hi = glm::max(left.sphere_hi, right.sphere_hi);
+}
+
 // Median split on the longest axis of the positions; the depth limit keeps the lookup's stack
 // bounded (at 60 levels a leaf holds the rest).
 void IrradianceRecordTree::build(std::uint32_t begin, std::uint32_t end, int depth) {
     const std::uint32_t self = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
-    glm::vec3 lo(1e30f), hi(-1e30f), plo(1e30f), phi(-1e30f), slo(1e30f), shi(-1e30f);
+    bound(nodes_[self], begin, end);
+    glm::vec3 plo(1e30f), phi(-1e30f);
     for (std::uint32_t i = begin; i < end; ++i) {
-        const IrradianceRecord& r = records_[order_[i]];
-        const glm::vec3 reach(accuracy_ * r.radius);
-        lo = glm::min(lo, r.position - reach);
-        hi = glm::max(hi, r.position + reach);
-        slo = glm::min(slo, r.position - glm::vec3(r.radius));
-        shi = glm::max(shi, r.position + glm::vec3(r.radius));
-        plo = glm::min(plo, r.position);
-        phi = glm::max(phi, r.position);
+        plo = glm::min(plo, records_[order_[i]].position);
+        phi = glm::max(phi, records_[order_[i]].position);
     }
-    nodes_[self].lo = lo;
-    nodes_[self].hi = hi;
-    nodes_[self].sphere_lo = slo;
-    nodes_[self].sphere_hi = shi;
     if (end - begin <= kLeafRecords || depth >= 60) {
         nodes_[self].first = begin;
         nodes_[self].count = end - begin;

@@ -82,16 +82,20 @@ public:
     void add(const std::vector<IrradianceRecord>& records);
     const std::vector<IrradianceRecord>& records() const { return records_; }
     IrradianceTreeView view() const;
+    float accuracy() const { return accuracy_; }
 
 private:
     void build(std::uint32_t begin, std::uint32_t end, int depth);
     void rebuild();
     void clamp_by_neighbours(std::uint32_t j);
+    void bound(IrradianceTreeNode& node, std::uint32_t begin, std::uint32_t end) const;
+    void refit(std::uint32_t node);
 
     float accuracy_;
     std::vector<IrradianceRecord> records_;
     std::vector<IrradianceTreeNode> nodes_;
     std::vector<std::uint32_t> order_;
+    std::vector<std::uint32_t> stack_;  // clamp_by_neighbours' scratch
 };
 
 }  // namespace kdpm

@@ -16,6 +16,7 @@
 #include "formats/repeated_triangles.h"
 #include "formats/triangle_clip.h"
 #include "formats/validate_kinds.h"
+#include "formats/validate_wide_tree.h"
 
 namespace kdpm {
 
@@ -266,7 +267,8 @@ void check_element_types(const ContainerReader& file) {
         {section::geo_normals, ElementType::record},   {section::geo_materials, ElementType::record},
         {section::geo_lights, ElementType::record},    {section::geo_camera, ElementType::record},
         {section::geo_uvs, ElementType::record},       {section::geo_textures, ElementType::record},
-        {section::geo_texels, ElementType::record},    {section::metadata, ElementType::text}};
+        {section::geo_texels, ElementType::record},    {section::geo_wide, ElementType::record},
+        {section::metadata, ElementType::text}};
     for (const auto& [id, type] : expected)
         if (const SectionEntry* e = file.find(id); e && e->element_type != static_cast<std::uint32_t>(type))
             fail(file, "section " + ContainerReader::section_label(id) + " has element type " +
@@ -302,6 +304,8 @@ void validate_geometry_file(const ContainerReader& file, const ValidationOptions
         fail(file, "geometry.textures and geometry.texels must come together");
     check_textures(file, textures.value_or(std::span<const TextureRecord>{}), texels.value_or(std::span<const Texel>{}),
                    materials);
+    if (const auto wide = file.optional_section<WideNode>(section::geo_wide))
+        check_wide_tree(file, info, WideTreeArrays{*wide, t.nodes, t.leaf, t.tris}, options.exhaustive);
     if (options.exhaustive) check_coverage(file, info, t);
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "builders/geometry/sah/sah_kd_builder.h"
+#include "builders/geometry/wide/wide_tree_builder.h"
 #include "formats/format_error.h"
 #include "formats/metadata.h"
 #include "formats/section_ids.h"
@@ -95,6 +96,25 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     }
     if (tree.repeated_triangles > 0) meta.statistics["repeated_triangles"] = static_cast<double>(tree.repeated_triangles);
 
+    // The wide tree from the finished kd-tree and the triangles as the file stores them.
+    WideTreeInput wide_in{tree.nodes.data(),
+                          static_cast<std::uint32_t>(tree.nodes.size()),
+                          tree.leaf_indices.data(),
+                          static_cast<std::uint32_t>(tree.leaf_indices.size()),
+                          scene->triangles.data(),
+                          static_cast<std::uint32_t>(scene->triangles.size()),
+                          {},
+                          {}};
+    for (int a = 0; a < 3; ++a) wide_in.bounds_min[a] = info.bounds_min[a], wide_in.bounds_max[a] = info.bounds_max[a];
+    const std::vector<WideNode> wide = build_wide_tree(wide_in);
+    if (!wide.empty()) {
+        std::uint64_t used = 0;
+        for (const WideNode& n : wide)
+            for (std::uint32_t c : n.count) used += c != 0;
+        meta.statistics["wide_nodes"] = static_cast<double>(wide.size());
+        meta.statistics["wide_mean_children"] = static_cast<double>(used) / static_cast<double>(wide.size());
+    }
+
     ContainerWriter w(FileKind::geometry);
     w.set_metadata(meta);
     w.add_record(section::geo_info, info);
@@ -105,6 +125,7 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     w.add(section::geo_materials, ElementType::record, scene->materials);
     w.add(section::geo_lights, ElementType::record, scene->lights);
     w.add_record(section::geo_camera, scene->camera);
+    if (!wide.empty()) w.add(section::geo_wide, ElementType::record, wide);
     // Texture coordinates only matter to a textured material, so untextured scenes carry none.
     if (!scene->textures.empty()) {
         w.add(section::geo_uvs, ElementType::record, scene->uvs);

@@ -30,6 +30,10 @@ inline GeometryView upload_geometry(std::vector<DeviceBuffer>& owned, const Geom
     d.uvs = upload_array(owned, h.uvs, h.uvs ? h.triangle_count : 0);
     d.textures = upload_array(owned, h.textures, h.texture_count);
     d.texels = upload_array(owned, h.texels, h.texel_count);
+    // GPU threads walk the binary tree: the wide walk's stack (up to 449 entries a ray) does not
+    // belong in a thread's local memory.
+    d.wide = nullptr;
+    d.wide_node_count = 0;
     return d;
 }
 

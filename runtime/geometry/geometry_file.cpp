@@ -46,6 +46,11 @@ GeometryFile::GeometryFile(ContainerReader reader) : reader_(std::move(reader)) 
         view_.texels = texels->data();
         view_.texel_count = texels->size();
     }
+    // Format 1.2: the wide tree, when the file has it (older files walk the kd-tree alone).
+    if (const auto wide = reader_.optional_section<WideNode>(section::geo_wide); wide && !wide->empty()) {
+        view_.wide = wide->data();
+        view_.wide_node_count = static_cast<std::uint32_t>(wide->size());
+    }
     view_.info = reader_.record<GeometryInfo>(section::geo_info);
     camera_ = reader_.record<CameraRecord>(section::geo_camera);
 }

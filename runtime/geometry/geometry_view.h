@@ -5,6 +5,7 @@
 
 #include "formats/geometry_layout.h"
 #include "formats/kd_node.h"
+#include "formats/wide_layout.h"
 
 namespace kdpm {
 
@@ -15,6 +16,8 @@ inline constexpr std::uint32_t kMaxKdDepth = kMaxKdTreeDepth;
 struct GeometryView {
     const KdNode* nodes = nullptr;
     std::uint32_t node_count = 0;
+    const WideNode* wide = nullptr;            // the wide tree (format 1.2), nullptr when absent
+    std::uint32_t wide_node_count = 0;
     const std::uint32_t* leaf_indices = nullptr;
     std::uint32_t leaf_index_count = 0;
     const TriangleRecord* triangles = nullptr;

@@ -236,16 +236,16 @@ inline bool walk_packet(const GeometryView& g, const RayPacket& p, Hit* out, boo
 
 }  // namespace packet_detail
 
-// out[i] = closest_hit(g, p.ray(i)) for i < p.count, bit for bit.
+// out[i] = closest_hit_kd(g, p.ray(i)) for i < p.count, bit for bit (the binary walk's hits).
 inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
     if (packet_detail::walk_packet<false>(g, p, out, nullptr, simd)) return;
-    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit(g, p.ray(i));
+    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit_kd(g, p.ray(i));
 }
 
-// out[i] = occluded(g, p.ray(i)) for i < p.count: shadow rays from one point.
+// out[i] = occluded_kd(g, p.ray(i)) for i < p.count: shadow rays from one point.
 inline void occluded_rays(const GeometryView& g, const RayPacket& p, bool* out, PacketIsa simd = PacketIsa::best) {
     if (packet_detail::walk_packet<true>(g, p, nullptr, out, simd)) return;
-    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded(g, p.ray(i));
+    for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded_kd(g, p.ray(i));
 }
 
 }  // namespace kdpm

@@ -14,6 +14,7 @@
 #include "runtime/geometry/leaf_triangles_simd.h"
 #include "runtime/geometry/ray.h"
 #include "runtime/geometry/triangle_intersect.h"
+#include "runtime/geometry/wide_traversal.h"
 
 namespace kdpm {
 
@@ -173,18 +174,37 @@ struct AnyVisitor {
 
 }  // namespace kd_detail
 
-// The closest hit with t in (ray.tmin, ray.tmax), or a Hit with triangle == kNoHit.
-KDPM_HD KDPM_INLINE Hit closest_hit(const GeometryView& g, const Ray& ray) {
+// The closest hit with t in (ray.tmin, ray.tmax), or a Hit with triangle == kNoHit, by the
+// binary walk of geometry.nodes.
+KDPM_HD KDPM_INLINE Hit closest_hit_kd(const GeometryView& g, const Ray& ray) {
     kd_detail::ClosestVisitor visitor{g, ray, miss(ray.tmax)};
     kd_detail::walk(g, ray, visitor);
     return visitor.hit;
 }
 
-// True when any triangle is hit with t in (ray.tmin, ray.tmax): shadow rays, visibility.
-KDPM_HD KDPM_INLINE bool occluded(const GeometryView& g, const Ray& ray) {
+// True when any triangle is hit with t in (ray.tmin, ray.tmax), by the binary walk.
+KDPM_HD KDPM_INLINE bool occluded_kd(const GeometryView& g, const Ray& ray) {
     kd_detail::AnyVisitor visitor{g, ray, false};
     kd_detail::walk(g, ray, visitor);
     return visitor.occluded;
+}
+
+// The closest hit with t in (ray.tmin, ray.tmax), or a Hit with triangle == kNoHit: on the CPU
+// over the wide tree where the file has one (format 1.2), else (and on the GPU) the binary walk.
+KDPM_HD KDPM_INLINE Hit closest_hit(const GeometryView& g, const Ray& ray) {
+#if !defined(__CUDA_ARCH__)
+    if (g.wide != nullptr) return closest_hit_wide(g, ray);
+#endif
+    return closest_hit_kd(g, ray);
+}
+
+// True when any triangle is hit with t in (ray.tmin, ray.tmax): shadow rays, visibility. The
+// same choice of walk as closest_hit.
+KDPM_HD KDPM_INLINE bool occluded(const GeometryView& g, const Ray& ray) {
+#if !defined(__CUDA_ARCH__)
+    if (g.wide != nullptr) return occluded_wide(g, ray);
+#endif
+    return occluded_kd(g, ray);
 }
 
 // Reference: every triangle tested, no tree. For tests and debugging.

@@ -14,9 +14,10 @@
 
 namespace kdpm::test {
 
-// Rays whose tree result disagrees with brute force: not found on one side, another distance
-// (relative 1e-5), or another triangle not at the same distance (an exact tie is allowed).
-inline int count_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
+// Rays whose tree result disagrees with brute force, over one walk: not found on one side,
+// another distance (relative 1e-5), or another triangle not at the same distance (an exact tie
+// is allowed).
+inline int count_walk_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
     int bad = 0;
     for (const Ray& r : rays) {
         const Hit a = closest_hit(g, r), b = closest_hit_brute_force(g, r);
@@ -31,6 +32,19 @@ inline int count_mismatches(const GeometryView& g, const std::vector<Ray>& rays)
         if (std::fabs(a.t - b.t) > 1e-5f * std::fabs(b.t)) ++bad;
         else if (a.triangle != b.triangle && a.t != b.t) ++bad;
         if (!occluded(g, r)) ++bad;
+    }
+    return bad;
+}
+
+// count_walk_mismatches for closest_hit and occluded as the runtime calls them (the wide walk
+// where the file has the wide tree, format 1.2) and, for such a file, for the binary walk too.
+inline int count_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
+    int bad = count_walk_mismatches(g, rays);
+    if (g.wide != nullptr) {
+        GeometryView binary = g;
+        binary.wide = nullptr;
+        binary.wide_node_count = 0;
+        bad += count_walk_mismatches(binary, rays);
     }
     return bad;
 }

@@ -34,8 +34,9 @@ const char* isa_name(PacketIsa isa) {
     return isa == PacketIsa::avx512 ? "AVX-512" : isa == PacketIsa::avx2 ? "AVX2" : "SSE2";
 }
 
-// Lanes whose packet result differs from the single ray's, over every packet walk: closest hits
-// in any bit, occlusion (the same rays as shadow rays) at all.
+// Lanes whose packet result differs from the single ray's binary walk (the packets walk the same
+// kd-tree), over every packet walk: closest hits in any bit, occlusion (the same rays as shadow
+// rays) at all.
 int packet_mismatches(const GeometryView& g, const RayPacket& p) {
     int bad = 0;
     for (PacketIsa isa : packet_isas()) {
@@ -44,14 +45,14 @@ int packet_mismatches(const GeometryView& g, const RayPacket& p) {
         closest_hits(g, p, out, isa);
         occluded_rays(g, p, blocked, isa);
         for (std::uint32_t i = 0; i < p.count; ++i) {
-            const Hit single = closest_hit(g, p.ray(i));
+            const Hit single = closest_hit_kd(g, p.ray(i));
             if (!same_bits(out[i], single)) {
                 ++bad;
                 UNSCOPED_INFO(isa_name(isa)
                               << " lane " << i << ": packet t " << out[i].t << " triangle " << out[i].triangle
                               << ", single t " << single.t << " triangle " << single.triangle);
             }
-            if (blocked[i] != occluded(g, p.ray(i))) {
+            if (blocked[i] != occluded_kd(g, p.ray(i))) {
                 ++bad;
                 UNSCOPED_INFO(isa_name(isa) << " lane " << i << ": packet occluded " << blocked[i]);
             }

@@ -221,13 +221,14 @@ TEST_CASE("a corrupt geometry.wide is refused with its fault named", "[geometry]
         {"one kd leaf in two slots",
          [](std::vector<WideNode>& w) {
              auto [n, j] = find_slot(w, false);
-             for (std::uint32_t k = 0; k < kWideWidth; ++k)
-                 if (k != j && w[n].count[k] != 0 && w[n].count[k] != kWideInner) {
-                     w[n].child[k] = w[n].child[j];
-                     w[n].count[k] = w[n].count[j];
-                     return;
-                 }
-             FAIL("no second leaf slot in the node");
+             for (std::uint32_t m = 0; m < w.size(); ++m)
+                 for (std::uint32_t k = 0; k < kWideWidth; ++k)
+                     if ((m != n || k != j) && w[m].count[k] != 0 && w[m].count[k] != kWideInner) {
+                         w[m].child[k] = w[n].child[j];
+                         w[m].count[k] = w[n].count[j];
+                         return;
+                     }
+             FAIL("no second leaf slot");
          },
          "is the slot of two wide nodes"},
         {"an empty slot with a box",

@@ -25,6 +25,12 @@ namespace kdpm {
 
 namespace wide_detail {
 
+// The exit distance a box test compares with is raised by 2^-20 of itself (Embree's conservative
+// slab test does the same): the few roundings of (box - origin) / direction then cannot turn a
+// grazing ray away from a box it enters, however far from the scene the ray starts, where the
+// boxes' margin covers only rays from within the scene's reach.
+inline constexpr float kExitSlack = 1.0f + 1.0f / 1048576.0f;
+
 // A direction component of (nearly) zero as a tiny one of the same sign: the box test's 1/d stays
 // finite and (box - origin) * (1/d) never 0 * inf. The tilt it makes is far below the margin
 // the boxes carry (wide_box_margin).
@@ -60,7 +66,7 @@ struct B {
                 t1 = std::fmin(t1, (far - r.org[a]) * r.inv[a]);
             }
             tnear[j] = t0;
-            hits |= (t0 <= t1) << j;
+            hits |= (t0 <= t1 * kExitSlack) << j;
         }
         return hits;
     }
@@ -103,7 +109,7 @@ struct B {
             t1 = _mm256_min_ps(t1, _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(far), r.org[a]), r.inv[a]));
         }
         _mm256_store_ps(tnear, t0);
-        return _mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ));
+        return _mm256_movemask_ps(_mm256_cmp_ps(t0, _mm256_mul_ps(t1, _mm256_set1_ps(kExitSlack)), _CMP_LE_OQ));
     }
 };
 

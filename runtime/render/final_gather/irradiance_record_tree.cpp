@@ -4,6 +4,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace kdpm {
 
@@ -28,8 +29,12 @@ void IrradianceRecordTree::rebuild() {
     if (!records_.empty()) build(0, static_cast<std::uint32_t>(order_.size()), 0);
 }
 
-// Every record i with |p_i - p_j| < max(R_i, R_j): the nodes whose R-spheres meet the ball of
-// radius R_j around p_j hold them all (p_j lies in the R-sphere of the first kind).
+// Every record i that clamps j or that j clamps: R_i > R_j + d puts p_j inside i's R-sphere, so
+// inside the R-sphere bounds of every node above i; R_j > R_i + d puts p_i within R_j of p_j, so
+// the valid-sphere bounds (which hold the positions) of those nodes within R_j. Asking the two
+// apart, and not whether the R-sphere bounds meet the ball of radius R_j, skips the nodes whose
+// R-spheres only come near p_j: in an open room records have the 3 m cap, and the wider test met
+// nearly every node (9 % of a Sponza final-gather frame, on one thread).
 void IrradianceRecordTree::clamp_by_neighbours(std::uint32_t j) {
     stack_.assign(1, 0u);
     while (!stack_.empty()) {
@@ -37,9 +42,12 @@ void IrradianceRecordTree::clamp_by_neighbours(std::uint32_t j) {
         const IrradianceTreeNode& node = nodes_[self];
         stack_.pop_back();
         IrradianceRecord& rj = records_[j];
-        const glm::vec3 nearest = glm::clamp(rj.position, node.sphere_lo, node.sphere_hi);
-        const glm::vec3 gap = nearest - rj.position;
-        if (glm::dot(gap, gap) > rj.radius * rj.radius) continue;
+        const bool in_spheres = glm::all(glm::greaterThanEqual(rj.position, node.sphere_lo)) &&
+                                glm::all(glm::lessThanEqual(rj.position, node.sphere_hi));
+        if (!in_spheres) {
+            const glm::vec3 gap = glm::clamp(rj.position, node.lo, node.hi) - rj.position;
+            if (glm::dot(gap, gap) > rj.radius * rj.radius) continue;
+        }
         if (node.count == 0) {
             stack_.push_back(node.first);
             stack_.push_back(self + 1);

@@ -17,6 +17,7 @@
 #include <cstdint>
 
 #include "formats/host_device.h"
+#include "runtime/geometry/cpu_features.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/geometry/sse2_ops.h"
 
@@ -190,15 +191,8 @@ using S = Avx512Ops;
 #pragma GCC pop_options
 #endif
 
-// Whether this CPU (and its OS) runs the AVX2 / AVX-512 walks: asked once.
-inline bool cpu_has_avx2() {
-    static const bool has = __builtin_cpu_supports("avx2");
-    return has;
-}
-inline bool cpu_has_avx512() {
-    static const bool has = __builtin_cpu_supports("avx512f");
-    return has;
-}
+using kdpm::cpu_has_avx2;  // runtime/geometry/cpu_features.h
+using kdpm::cpu_has_avx512;
 
 #endif  // KDPM_PACKET_SIMD
 

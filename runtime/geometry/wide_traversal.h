@@ -11,6 +11,7 @@
 
 #include "formats/host_device.h"
 #include "formats/wide_layout.h"
+#include "runtime/geometry/cpu_features.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/leaf_triangles_simd.h"
 #include "runtime/geometry/ray.h"
@@ -121,11 +122,6 @@ struct B {
 #else
 #pragma GCC pop_options
 #endif
-
-inline bool cpu_has_avx2() {
-    static const bool has = __builtin_cpu_supports("avx2");
-    return has;
-}
 #endif
 
 }  // namespace wide_detail
@@ -133,7 +129,7 @@ inline bool cpu_has_avx2() {
 // The closest hit with t in (ray.tmin, ray.tmax) over g.wide (which must be set).
 inline Hit closest_hit_wide(const GeometryView& g, const Ray& ray) {
 #if defined(KDPM_WIDE_AVX2)
-    if (wide_detail::cpu_has_avx2()) return wide_detail::avx2::closest_hit(g, ray);
+    if (cpu_has_avx2()) return wide_detail::avx2::closest_hit(g, ray);
 #endif
     return wide_detail::scalar::closest_hit(g, ray);
 }
@@ -141,7 +137,7 @@ inline Hit closest_hit_wide(const GeometryView& g, const Ray& ray) {
 // Whether any triangle is hit with t in (ray.tmin, ray.tmax), over g.wide.
 inline bool occluded_wide(const GeometryView& g, const Ray& ray) {
 #if defined(KDPM_WIDE_AVX2)
-    if (wide_detail::cpu_has_avx2()) return wide_detail::avx2::occluded(g, ray);
+    if (cpu_has_avx2()) return wide_detail::avx2::occluded(g, ray);
 #endif
     return wide_detail::scalar::occluded(g, ray);
 }

@@ -35,7 +35,7 @@ int wide_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
         const Hit scalar = wide_detail::scalar::closest_hit(g, r);
         const bool scalar_any = wide_detail::scalar::occluded(g, r);
 #if defined(KDPM_WIDE_AVX2)
-        if (wide_detail::cpu_has_avx2()) {
+        if (cpu_has_avx2()) {
             bad += !same_bits(scalar, wide_detail::avx2::closest_hit(g, r));
             bad += scalar_any != wide_detail::avx2::occluded(g, r);
         }
@@ -126,7 +126,7 @@ TEST_CASE("the wide walk finds brute force's closest hits with both box tests", 
         CHECK(wide_mismatches(file.view(), test::random_rays(5000, 32, -3.0f, 4.0f)) == 0);
     }
 #if defined(KDPM_WIDE_AVX2)
-    if (!wide_detail::cpu_has_avx2()) WARN("this CPU lacks AVX2: only the lane-by-lane box test was run");
+    if (!cpu_has_avx2()) WARN("this CPU lacks AVX2: only the lane-by-lane box test was run");
 #endif
 }
 

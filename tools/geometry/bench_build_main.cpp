@@ -15,18 +15,12 @@
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
 #include "tools/cli/sah_cost_options.h"
+#include "tools/geometry/shared_scenes.h"
 
 using namespace kdpm;
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path shared_scenes() {
-    if (const char* env = std::getenv("KDPM_SCENES"); env && *env) return env;
-    return fs::path(KDPM_SOURCE_DIR) / ".." / "shared" / "scenes";
-}
-
-}  // namespace
+using cli::shared_scenes;
 
 int main(int argc, char** argv) {
     int runs = 5, threads = 0;

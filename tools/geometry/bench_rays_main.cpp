@@ -23,16 +23,14 @@
 #include "tools/bench/median_time.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
+#include "tools/geometry/shared_scenes.h"
 
 using namespace kdpm;
 namespace fs = std::filesystem;
 
-namespace {
+using cli::shared_scenes;
 
-fs::path shared_scenes() {
-    if (const char* env = std::getenv("KDPM_SCENES"); env && *env) return env;
-    return fs::path(KDPM_SOURCE_DIR) / ".." / "shared" / "scenes";
-}
+namespace {
 
 struct RaySets {
     std::vector<Ray> primary, bounce, shadow;

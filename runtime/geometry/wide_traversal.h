@@ -2,10 +2,11 @@
 // Closest hit and any-hit over the wide tree (formats/wide_layout.h, geometry.wide): each step
 // tests a node's eight child boxes at once (AVX2 where the CPU has it, chosen at run time; lane
 // by lane elsewhere), visits the entered children near to far and skips those that start beyond
-// the nearest hit so far. The boxes are disjoint parts of the kd-tree's cells, so the first
-// leaves visited are the ones the binary walk would visit, without its empty leaves and the
-// planes between them. The hits are the binary walk's: the same triangle tests on the same
-// leaves' triangles (ties between triangles at the same t may resolve to the other one).
+// the nearest hit so far. The boxes lie in disjoint kd cells (but for their small margin), so the
+// leaves visited first are the ones the binary walk would visit, without its empty leaves and
+// the planes between them. The same triangle tests run on the same leaves' triangles, so the hits
+// are the binary walk's, except that ties at one t may name the other triangle and that a ray
+// lying in a kd plane can find a hit there that the binary walk misses (brute force finds it).
 #include <cmath>
 #include <cstdint>
 

@@ -63,7 +63,7 @@ public:
     // slots, smallest child first (children before parents, so a child is as full as it gets
     // before its parent looks): the top-down collapse leaves many nodes of two or three children
     // at the bottom of the tree. Then drops the nodes no longer reached and renumbers breadth
-    // first. Sponza: 13,626 -> 10,700 nodes, the same or faster walks (kdpm-bench-rays).
+    // first. Sponza: 13,626 -> 10,713 nodes, the same or faster walks (kdpm-bench-rays).
     void merge_small_children() {
         for (std::size_t i = out_.size(); i-- > 0;) {
             WideNode& p = out_[i];

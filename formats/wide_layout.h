@@ -22,4 +22,12 @@ struct WideNode {
 };
 static_assert(sizeof(WideNode) == 256);
 
+// How many of the node's slots are used: those of count != 0 (inner or leaf); an empty slot has
+// count 0.
+inline std::uint32_t wide_used_slots(const WideNode& n) {
+    std::uint32_t u = 0;
+    for (std::uint32_t c : n.count) u += c != 0;
+    return u;
+}
+
 }  // namespace kdpm

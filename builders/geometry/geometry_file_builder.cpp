@@ -109,8 +109,7 @@ ContainerWriter assemble_geometry_file(const Scene& input, const KdTree& tree, c
     const std::vector<WideNode> wide = build_wide_tree(wide_in);
     if (!wide.empty()) {
         std::uint64_t used = 0;
-        for (const WideNode& n : wide)
-            for (std::uint32_t c : n.count) used += c != 0;
+        for (const WideNode& n : wide) used += wide_used_slots(n);
         meta.statistics["wide_nodes"] = static_cast<double>(wide.size());
         meta.statistics["wide_mean_children"] = static_cast<double>(used) / static_cast<double>(wide.size());
     }

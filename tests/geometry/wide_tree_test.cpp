@@ -194,12 +194,12 @@ TEST_CASE("the wide tree collapses the kd-tree and holds each of its leaves once
     for (std::uint32_t i = 0; i < g.node_count; ++i)
         if (g.nodes[i].is_leaf() && g.nodes[i].count() > 0) kd_leaves.insert(g.nodes[i].first());
     std::size_t used = 0;
-    for (std::uint32_t i = 0; i < g.wide_node_count; ++i)
-        for (std::uint32_t j = 0; j < kWideWidth; ++j) {
-            used += g.wide[i].count[j] != 0;
+    for (std::uint32_t i = 0; i < g.wide_node_count; ++i) {
+        used += wide_used_slots(g.wide[i]);
+        for (std::uint32_t j = 0; j < kWideWidth; ++j)
             if (g.wide[i].count[j] != 0 && g.wide[i].count[j] != kWideInner)
                 CHECK(slots.insert(g.wide[i].child[j]).second);
-        }
+    }
     CHECK(slots == kd_leaves);  // a high-quality build's leaves all meet their cells
     // Three kd levels and more per wide node, and their empty leaves gone.
     CHECK(g.wide_node_count * 8 < g.node_count);

@@ -53,12 +53,6 @@ public:
         return std::move(out_);
     }
 
-    static std::uint32_t used(const WideNode& n) {
-        std::uint32_t u = 0;
-        for (std::uint32_t c : n.count) u += c != 0;
-        return u;
-    }
-
     // Pulls the slots of a child node up into its parent wherever they fit in the parent's free
     // slots, smallest child first (children before parents, so a child is as full as it gets
     // before its parent looks): the top-down collapse leaves many nodes of two or three children
@@ -72,8 +66,8 @@ public:
                 std::uint32_t best = kWideWidth, best_used = kWideWidth + 1;
                 for (std::uint32_t j = 0; j < kWideWidth; ++j) {
                     if (p.count[j] != kWideInner) continue;
-                    const std::uint32_t u = used(out_[p.child[j]]);
-                    if (used(p) - 1 + u <= kWideWidth && u < best_used) best = j, best_used = u;
+                    const std::uint32_t u = wide_used_slots(out_[p.child[j]]);
+                    if (wide_used_slots(p) - 1 + u <= kWideWidth && u < best_used) best = j, best_used = u;
                 }
                 if (best == kWideWidth) break;
                 const WideNode c = out_[p.child[best]];

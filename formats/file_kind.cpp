@@ -6,7 +6,7 @@ namespace kdpm {
 namespace {
 
 const FileKindInfo kKinds[] = {
-    {FileKind::geometry, {'K', 'D', 'P', 'M', '-', 'G', 'E', 'O'}, 1, 2, "geometry kd-tree", ".kdg",
+    {FileKind::geometry, {'K', 'D', 'P', 'M', '-', 'G', 'E', 'O'}, 1, 3, "geometry kd-tree", ".kdg",
      "kdpm-build-geometry SCENE -o FILE.kdg"},
     {FileKind::photon_hits, {'K', 'D', 'P', 'M', '-', 'P', 'H', 'H'}, 1, 0, "photon hits", ".kdph",
      "kdpm-shoot-photons SCENE.kdg -o FILE.kdph"},

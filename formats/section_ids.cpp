@@ -38,6 +38,8 @@ std::string name(std::uint32_t id) {
         case geo_textures: return "geometry.textures";
         case geo_texels: return "geometry.texels";
         case geo_wide: return "geometry.wide";
+        case geo_objects: return "geometry.objects";
+        case geo_instances: return "geometry.instances";
         case hits_info: return "hits.info";
         case hits_photons: return "hits.photons";
         default: return photon_tree_name(id);

@@ -21,6 +21,8 @@ inline constexpr std::uint32_t geo_uvs = 0x108;        // TriangleUVs[] texture 
 inline constexpr std::uint32_t geo_textures = 0x109;   // TextureRecord[] mip-mapped diffuse textures (1.1)
 inline constexpr std::uint32_t geo_texels = 0x10A;     // Texel[] of every texture's levels (1.1)
 inline constexpr std::uint32_t geo_wide = 0x10B;       // WideNode[] the kd-tree collapsed to 8-wide nodes (1.2)
+inline constexpr std::uint32_t geo_objects = 0x10C;    // ObjectReference[] object files a scene places (1.3)
+inline constexpr std::uint32_t geo_instances = 0x10D;  // InstanceRecord[] placements of those objects (1.3)
 
 // photon hits (.kdph)
 inline constexpr std::uint32_t hits_info = 0x200;      // PhotonHitsInfo, one record

@@ -26,6 +26,42 @@ namespace {
     throw FormatError(file.name() + ": invalid geometry file: " + why);
 }
 
+}  // namespace
+
+void check_scene_defaults(const ContainerReader& file, const GeometryInfo& info) {
+    if (info.up_axis > 2) fail(file, "up_axis must be 0, 1 or 2");
+    // The defaults reach the shooter and the renderer: the same limits as their options.
+    if (info.default_photons > kMaxPhotons)
+        fail(file, "default photons " + std::to_string(info.default_photons) + " exceed " + std::to_string(kMaxPhotons));
+    if (info.default_bounces > kMaxBounces)
+        fail(file, "default bounces " + std::to_string(info.default_bounces) + " exceed " + std::to_string(kMaxBounces));
+    if (info.default_k > kMaxEstimateK)
+        fail(file, "default k " + std::to_string(info.default_k) + " exceeds " + std::to_string(kMaxEstimateK));
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
+            info.bounds_min[a] > info.bounds_max[a])
+            fail(file, "scene bounds are not finite and ordered");
+    }
+}
+
+void check_lights(const ContainerReader& file, std::span<const AreaLightRecord> lights, std::size_t tri_count) {
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const AreaLightRecord& l = lights[i];
+        if (l.shape > static_cast<std::uint32_t>(LightShape::parallelogram))
+            fail(file, "light " + std::to_string(i) + " has an unknown shape");
+        if (l.triangle != 0xffffffffu && l.triangle >= tri_count)
+            fail(file, "light " + std::to_string(i) + " names a triangle out of range");
+        const float values[] = {l.p0[0], l.p0[1], l.p0[2], l.e1[0], l.e1[1], l.e1[2], l.e2[0], l.e2[1], l.e2[2],
+                                l.radiance[0], l.radiance[1], l.radiance[2], l.area, l.power};
+        for (float v : values)
+            if (!std::isfinite(v)) fail(file, "light " + std::to_string(i) + " has a value that is not finite");
+        if (!(l.area > 0.0f) || l.power < 0.0f || l.radiance[0] < 0.0f || l.radiance[1] < 0.0f || l.radiance[2] < 0.0f)
+            fail(file, "light " + std::to_string(i) + " has a non-positive area or a negative power");
+    }
+}
+
+namespace {
+
 struct TreeArrays {
     std::span<const KdNode> nodes;
     std::span<const std::uint32_t> leaf;
@@ -45,19 +81,7 @@ void check_info(const ContainerReader& file, const GeometryInfo& info, const Tre
         fail(file, "info.leaf_index_count does not match geometry.leaf_indices");
     if (info.max_depth > kMaxKdTreeDepth)
         fail(file, "tree depth " + std::to_string(info.max_depth) + " exceeds " + std::to_string(kMaxKdTreeDepth));
-    if (info.up_axis > 2) fail(file, "up_axis must be 0, 1 or 2");
-    // The defaults reach the shooter and the renderer: the same limits as their options.
-    if (info.default_photons > kMaxPhotons)
-        fail(file, "default photons " + std::to_string(info.default_photons) + " exceed " + std::to_string(kMaxPhotons));
-    if (info.default_bounces > kMaxBounces)
-        fail(file, "default bounces " + std::to_string(info.default_bounces) + " exceed " + std::to_string(kMaxBounces));
-    if (info.default_k > kMaxEstimateK)
-        fail(file, "default k " + std::to_string(info.default_k) + " exceeds " + std::to_string(kMaxEstimateK));
-    for (int a = 0; a < 3; ++a) {
-        if (!std::isfinite(info.bounds_min[a]) || !std::isfinite(info.bounds_max[a]) ||
-            info.bounds_min[a] > info.bounds_max[a])
-            fail(file, "scene bounds are not finite and ordered");
-    }
+    check_scene_defaults(file, info);
     if (t.nodes.empty()) fail(file, "the tree has no nodes");
 }
 
@@ -140,19 +164,7 @@ void check_indices(const ContainerReader& file, const TreeArrays& t, std::span<c
         if (m.kind == static_cast<std::uint32_t>(MaterialKind::glass) && !(m.ior > 0.0f && std::isfinite(m.ior)))
             fail(file, "material " + std::to_string(i) + " has an index of refraction that is not positive");
     }
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const AreaLightRecord& l = lights[i];
-        if (l.shape > static_cast<std::uint32_t>(LightShape::parallelogram))
-            fail(file, "light " + std::to_string(i) + " has an unknown shape");
-        if (l.triangle != 0xffffffffu && l.triangle >= tri_count)
-            fail(file, "light " + std::to_string(i) + " names a triangle out of range");
-        const float values[] = {l.p0[0], l.p0[1], l.p0[2], l.e1[0], l.e1[1], l.e1[2], l.e2[0], l.e2[1], l.e2[2],
-                                l.radiance[0], l.radiance[1], l.radiance[2], l.area, l.power};
-        for (float v : values)
-            if (!std::isfinite(v)) fail(file, "light " + std::to_string(i) + " has a value that is not finite");
-        if (!(l.area > 0.0f) || l.power < 0.0f || l.radiance[0] < 0.0f || l.radiance[1] < 0.0f || l.radiance[2] < 0.0f)
-            fail(file, "light " + std::to_string(i) + " has a non-positive area or a negative power");
-    }
+    check_lights(file, lights, tri_count);
 }
 
 // Every usable triangle (but exact copies of an earlier one) that overlaps the inside of a leaf cell (the cell shrunk by a small
@@ -279,6 +291,10 @@ void check_element_types(const ContainerReader& file) {
 }  // namespace
 
 void validate_geometry_file(const ContainerReader& file, const ValidationOptions& options) {
+    if (file.find(section::geo_instances) || file.find(section::geo_objects)) {
+        validate_instanced_scene_file(file, options);
+        return;
+    }
     const GeometryInfo& info = file.record<GeometryInfo>(section::geo_info);
     check_element_types(file);
     try {

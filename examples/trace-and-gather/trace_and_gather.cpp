@@ -9,7 +9,7 @@
 
 #include "formats/photon_layout.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_file.h"
 

@@ -8,7 +8,8 @@
 
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
+#include "runtime/geometry/instance_hit.h"
 #include "runtime/geometry/surface_normal.h"
 
 namespace kdpm::python {
@@ -51,11 +52,11 @@ inline void intersect_batch(const GeometryView& g, const RayBatch& rays, const H
         out.triangle[i] = hit.triangle;
         out.u[i] = hit.u;
         out.v[i] = hit.v;
-        const glm::vec3 s = shading_normal(g, hit.triangle, hit.u, hit.v);
+        const glm::vec3 s = world_shading_normal(g, hit);
         n[0] = s.x;
         n[1] = s.y;
         n[2] = s.z;
-        out.material[i] = g.triangles[hit.triangle].material;
+        out.material[i] = object_of(g, hit).triangles[hit.triangle].material;
     }, 256);
 }
 

@@ -21,6 +21,16 @@ const T* upload_array(std::vector<DeviceBuffer>& owned, const T* host, std::uint
 
 inline GeometryView upload_geometry(std::vector<DeviceBuffer>& owned, const GeometryView& h) {
     GeometryView d = h;
+    // A scene of instances: each object's arrays, then the table of their device views, the
+    // placements and the instance BVH (the scene has no triangles of its own).
+    if (h.instance_count != 0) {
+        std::vector<GeometryView> objects;
+        objects.reserve(h.object_count);
+        for (std::uint32_t i = 0; i < h.object_count; ++i) objects.push_back(upload_geometry(owned, h.objects[i]));
+        d.objects = upload_array(owned, objects.data(), objects.size());
+        d.instances = upload_array(owned, h.instances, h.instance_count);
+        d.instance_nodes = upload_array(owned, h.instance_nodes, h.instance_node_count);
+    }
     d.nodes = upload_array(owned, h.nodes, h.node_count);
     d.leaf_indices = upload_array(owned, h.leaf_indices, h.leaf_index_count);
     d.triangles = upload_array(owned, h.triangles, h.triangle_count);

@@ -1,22 +1,47 @@
 #include "runtime/geometry/geometry_file.h"
 
+#include <cstring>
+#include <vector>
+
+#include "formats/instance_layout.h"
 #include "formats/section_ids.h"
 #include "formats/tree_validation.h"
+#include "runtime/geometry/instance_bvh.h"
+#include "runtime/geometry/instance_lights.h"
 
 namespace kdpm {
 
+struct GeometryFile::Instances {
+    std::vector<GeometryFile> files;
+    std::vector<GeometryView> views;
+    std::vector<InstancePlacement> placements;
+    std::vector<InstanceNode> nodes;
+    std::vector<AreaLightRecord> lights;
+};
+
 GeometryFile GeometryFile::open(const std::filesystem::path& path) {
-    return GeometryFile(ContainerReader::open(path, FileKind::geometry));
+    return GeometryFile(ContainerReader::open(path, FileKind::geometry), path.parent_path());
 }
 
-GeometryFile GeometryFile::from_bytes(std::span<const std::uint8_t> bytes, const std::string& name) {
-    return GeometryFile(ContainerReader::from_bytes(bytes, name, FileKind::geometry));
+GeometryFile GeometryFile::from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                                      const std::filesystem::path& folder) {
+    return GeometryFile(ContainerReader::from_bytes(bytes, name, FileKind::geometry), folder);
 }
 
-GeometryFile::GeometryFile(ContainerReader reader) : reader_(std::move(reader)) {
+GeometryFile::GeometryFile(GeometryFile&&) noexcept = default;
+GeometryFile& GeometryFile::operator=(GeometryFile&&) noexcept = default;
+GeometryFile::~GeometryFile() = default;
+
+std::uint64_t GeometryFile::content_hash() const { return reader_.header().section_table_checksum; }
+
+GeometryFile::GeometryFile(ContainerReader reader, const std::filesystem::path& folder) : reader_(std::move(reader)) {
     // Checksums, then the structural validator: linear in the file size, it checks every index
     // the kernels follow, so after it the traversal cannot leave the arrays or overflow its stack.
     validate_file(reader_, ValidationOptions{});
+    if (reader_.find(section::geo_instances)) {
+        open_instances(folder);
+        return;
+    }
 
     const auto nodes = reader_.section<KdNode>(section::geo_nodes);
     const auto leaf = reader_.section<std::uint32_t>(section::geo_leaf_indices);
@@ -53,6 +78,66 @@ GeometryFile::GeometryFile(ContainerReader reader) : reader_(std::move(reader)) 
     }
     view_.info = reader_.record<GeometryInfo>(section::geo_info);
     camera_ = reader_.record<CameraRecord>(section::geo_camera);
+}
+
+// A scene of instances: every object file opened (and validated) once, however many instances
+// place it; the placements with their inverses; the BVH over their world boxes; the lights of
+// every placed object in world space after the scene's own (card) lights.
+void GeometryFile::open_instances(const std::filesystem::path& folder) {
+    auto parts = std::make_unique<Instances>();
+    const auto objects = reader_.section<ObjectReference>(section::geo_objects);
+    const auto records = reader_.section<InstanceRecord>(section::geo_instances);
+    parts->files.reserve(objects.size());
+    for (const ObjectReference& o : objects) {
+        const std::filesystem::path path = folder / std::filesystem::path(std::string(o.path));
+        GeometryFile object = [&] {
+            try {
+                return GeometryFile::open(path);
+            } catch (const std::exception& e) {
+                throw FormatError(reader_.name() + ": object " + std::string(o.path) + ": " + e.what());
+            }
+        }();
+        if (object.has_instances())
+            throw FormatError(reader_.name() + ": object " + path.string() +
+                              " places instances itself; a scene places objects one level deep");
+        if (object.content_hash() != o.content_hash)
+            throw FormatError(reader_.name() + ": object " + path.string() +
+                              " has changed since the scene was built (content hash differs): rebuild the scene "
+                              "with kdpm-build-geometry");
+        parts->files.push_back(std::move(object));
+    }
+    for (const GeometryFile& f : parts->files) parts->views.push_back(f.view());
+
+    std::vector<WorldBox> boxes;
+    boxes.reserve(records.size());
+    parts->placements.reserve(records.size());
+    for (const InstanceRecord& r : records) {
+        InstancePlacement p{};
+        std::memcpy(p.world_from_object.m, r.world_from_object, sizeof p.world_from_object.m);
+        p.object_from_world = inverse_affine(p.world_from_object);
+        p.object = r.object;
+        parts->placements.push_back(p);
+        boxes.push_back(placed_bounds(parts->views[r.object].info, p.world_from_object));
+    }
+    parts->nodes = build_instance_bvh(boxes);
+    const auto own_lights = reader_.section<AreaLightRecord>(section::geo_lights);
+    parts->lights.assign(own_lights.begin(), own_lights.end());
+    append_placed_lights(parts->views, parts->placements, parts->lights);
+
+    view_ = GeometryView{};
+    view_.info = reader_.record<GeometryInfo>(section::geo_info);
+    const InstanceNode& root = parts->nodes[0];
+    for (int a = 0; a < 3; ++a) view_.info.bounds_min[a] = root.lo[a], view_.info.bounds_max[a] = root.hi[a];
+    view_.lights = parts->lights.data();
+    view_.light_count = static_cast<std::uint32_t>(parts->lights.size());
+    view_.objects = parts->views.data();
+    view_.object_count = static_cast<std::uint32_t>(parts->views.size());
+    view_.instances = parts->placements.data();
+    view_.instance_count = static_cast<std::uint32_t>(parts->placements.size());
+    view_.instance_nodes = parts->nodes.data();
+    view_.instance_node_count = static_cast<std::uint32_t>(parts->nodes.size());
+    camera_ = reader_.record<CameraRecord>(section::geo_camera);
+    instances_ = std::move(parts);
 }
 
 }  // namespace kdpm

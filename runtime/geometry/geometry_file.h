@@ -3,6 +3,7 @@
 // kdpm file the runtime loads (section checksums, required sections, record sizes, every index
 // in range, tree shape and depth), then exposed as a GeometryView that kernels can use directly.
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 
@@ -14,10 +15,21 @@ namespace kdpm {
 
 class GeometryFile {
 public:
-    // Throws FormatError with a one-line reason for a missing, corrupt or foreign file.
+    // Throws FormatError with a one-line reason for a missing, corrupt or foreign file. A scene of
+    // instances (format 1.3) opens its object files too, relative to its own folder, and refuses
+    // one whose content hash is not the one it was built with.
     static GeometryFile open(const std::filesystem::path& path);
-    // Over a copy of the caller's bytes (tests).
-    static GeometryFile from_bytes(std::span<const std::uint8_t> bytes, const std::string& name);
+    // Over a copy of the caller's bytes (tests); object paths are taken relative to `folder`.
+    static GeometryFile from_bytes(std::span<const std::uint8_t> bytes, const std::string& name,
+                                   const std::filesystem::path& folder = {});
+    GeometryFile(GeometryFile&&) noexcept;
+    GeometryFile& operator=(GeometryFile&&) noexcept;
+    ~GeometryFile();
+
+    // The content hash a scene of instances stores for this file: its section table's checksum,
+    // which covers every section's checksum.
+    std::uint64_t content_hash() const;
+    bool has_instances() const { return view_.instance_count != 0; }
 
     const GeometryView& view() const { return view_; }
     const GeometryInfo& info() const { return view_.info; }
@@ -30,8 +42,11 @@ public:
     std::span<const AreaLightRecord> lights() const { return {view_.lights, view_.light_count}; }
 
 private:
-    explicit GeometryFile(ContainerReader reader);
+    GeometryFile(ContainerReader reader, const std::filesystem::path& folder);
+    void open_instances(const std::filesystem::path& folder);
+    struct Instances;  // the objects' files and views, placements, instance BVH, world lights
     ContainerReader reader_;
+    std::unique_ptr<Instances> instances_;
     GeometryView view_{};
     CameraRecord camera_{};
 };

@@ -6,6 +6,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/kd_node.h"
 #include "formats/wide_layout.h"
+#include "runtime/geometry/instance_view.h"
 
 namespace kdpm {
 
@@ -33,6 +34,14 @@ struct GeometryView {
     const Texel* texels = nullptr;
     std::uint64_t texel_count = 0;
     GeometryInfo info{};  // a copy: bounds, counts and scene defaults
+    // A scene of instances (format 1.3) has no triangles of its own: rays walk the instance BVH
+    // into the objects' views (which have no instances themselves). Lights are in world space.
+    const GeometryView* objects = nullptr;
+    std::uint32_t object_count = 0;
+    const InstancePlacement* instances = nullptr;
+    std::uint32_t instance_count = 0;
+    const InstanceNode* instance_nodes = nullptr;
+    std::uint32_t instance_node_count = 0;
 };
 
 }  // namespace kdpm

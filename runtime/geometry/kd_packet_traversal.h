@@ -18,7 +18,7 @@
 
 #include "formats/host_device.h"
 #include "runtime/geometry/cpu_features.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/geometry/sse2_ops.h"
 
 #if defined(__SSE2__) && defined(__x86_64__) && !defined(__CUDACC__)
@@ -231,13 +231,22 @@ inline bool walk_packet(const GeometryView& g, const RayPacket& p, Hit* out, boo
 }  // namespace packet_detail
 
 // out[i] = closest_hit_kd(g, p.ray(i)) for i < p.count, bit for bit (the binary walk's hits).
+// A scene of instances: out[i] = closest_hit(g, p.ray(i)), ray by ray.
 inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
+    if (g.instance_count != 0) {
+        for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit(g, p.ray(i));
+        return;
+    }
     if (packet_detail::walk_packet<false>(g, p, out, nullptr, simd)) return;
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit_kd(g, p.ray(i));
 }
 
 // out[i] = occluded_kd(g, p.ray(i)) for i < p.count: shadow rays from one point.
 inline void occluded_rays(const GeometryView& g, const RayPacket& p, bool* out, PacketIsa simd = PacketIsa::best) {
+    if (g.instance_count != 0) {
+        for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded(g, p.ray(i));
+        return;
+    }
     if (packet_detail::walk_packet<true>(g, p, nullptr, out, simd)) return;
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded_kd(g, p.ray(i));
 }

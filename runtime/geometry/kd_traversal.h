@@ -189,33 +189,23 @@ KDPM_HD KDPM_INLINE bool occluded_kd(const GeometryView& g, const Ray& ray) {
     return visitor.occluded;
 }
 
-// The closest hit with t in (ray.tmin, ray.tmax), or a Hit with triangle == kNoHit: on the CPU
-// over the wide tree where the file has one (format 1.2), else (and on the GPU) the binary walk.
-KDPM_HD KDPM_INLINE Hit closest_hit(const GeometryView& g, const Ray& ray) {
+// The closest hit with t in (ray.tmin, ray.tmax) among g's own triangles, or a Hit with
+// triangle == kNoHit: on the CPU over the wide tree where the file has one (format 1.2), else
+// (and on the GPU) the binary walk. closest_hit (scene_traversal.h) adds instances.
+KDPM_HD KDPM_INLINE Hit closest_hit_flat(const GeometryView& g, const Ray& ray) {
 #if !defined(__CUDA_ARCH__)
     if (g.wide != nullptr) return closest_hit_wide(g, ray);
 #endif
     return closest_hit_kd(g, ray);
 }
 
-// True when any triangle is hit with t in (ray.tmin, ray.tmax): shadow rays, visibility. The
-// same choice of walk as closest_hit.
-KDPM_HD KDPM_INLINE bool occluded(const GeometryView& g, const Ray& ray) {
+// True when any of g's own triangles is hit with t in (ray.tmin, ray.tmax), by the same choice of
+// walk as closest_hit_flat.
+KDPM_HD KDPM_INLINE bool occluded_flat(const GeometryView& g, const Ray& ray) {
 #if !defined(__CUDA_ARCH__)
     if (g.wide != nullptr) return occluded_wide(g, ray);
 #endif
     return occluded_kd(g, ray);
-}
-
-// Reference: every triangle tested, no tree. For tests and debugging.
-KDPM_HD KDPM_INLINE Hit closest_hit_brute_force(const GeometryView& g, const Ray& ray) {
-    Hit hit = miss(ray.tmax);
-    for (std::uint32_t i = 0; i < g.triangle_count; ++i) {
-        float t, u, v;
-        if (intersect_triangle(g.triangles[i], ray.origin, ray.direction, ray.tmin, hit.t, t, u, v))
-            hit = Hit{t, i, u, v};
-    }
-    return hit;
 }
 
 }  // namespace kdpm

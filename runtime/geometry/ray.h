@@ -19,11 +19,14 @@ struct Ray {
 };
 
 inline constexpr std::uint32_t kNoHit = 0xffffffffu;
+// Hit::instance of a scene without instances (its own triangles were hit).
+inline constexpr std::uint32_t kNoInstance = 0xffffffffu;
 
 struct Hit {
     float t;                // ray parameter of the hit
-    std::uint32_t triangle; // index into geometry.triangles, kNoHit on a miss
+    std::uint32_t triangle; // index into geometry.triangles (of the instance's object), kNoHit on a miss
     float u, v;             // barycentrics of v1 and v2: p = v0 + u * e1 + v * e2
+    std::uint32_t instance = kNoInstance;  // index into GeometryView::instances when the scene has them
 
     KDPM_HD bool found() const { return triangle != kNoHit; }
 };

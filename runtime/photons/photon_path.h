@@ -18,7 +18,7 @@
 #include "formats/host_device.h"
 #include "formats/photon_layout.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/geometry/surface_normal.h"
 #include "runtime/shading/area_light.h"
 #include "runtime/shading/color.h"
@@ -114,7 +114,7 @@ KDPM_HD inline bool continue_photon_path(const GeometryView& g, const ShootSetti
     const std::uint32_t bounce = st.bounce;
     glm::vec3 direction = st.direction;
     auto rnd = [&](std::uint32_t stream, std::uint32_t dim) { return counter_random(s.seed, path, stream, dim); };
-    const TriangleRecord& tri = g.triangles[hit.triangle];
+    const TriangleRecord tri = world_triangle(g, hit);
     const glm::vec3 p = surface_point(tri, hit.u, hit.v);
     const glm::vec3 ng = geometric_normal(tri);
     const bool front = glm::dot(direction, ng) < 0.0f;

@@ -11,7 +11,7 @@
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_packet_traversal.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/shading/area_light.h"
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"

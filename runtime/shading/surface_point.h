@@ -8,6 +8,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/instance_hit.h"
 #include "runtime/geometry/ray.h"
 #include "runtime/geometry/surface_normal.h"
 #include "runtime/shading/texture_lookup.h"
@@ -23,9 +24,8 @@ struct SurfacePoint {
 
 // The hit of `ray`, at its ray parameter.
 KDPM_HD KDPM_INLINE SurfacePoint surface_at(const GeometryView& g, const Ray& ray, const Hit& hit) {
-    const TriangleRecord& tri = g.triangles[hit.triangle];
-    const glm::vec3 ng = geometric_normal(tri);
-    glm::vec3 ns = shading_normal(g, hit.triangle, hit.u, hit.v);
+    const glm::vec3 ng = geometric_normal(world_triangle(g, hit));
+    glm::vec3 ns = world_shading_normal(g, hit);
     SurfacePoint s;
     s.front = glm::dot(ng, ray.direction) < 0.0f;
     s.geometric_normal = s.front ? ng : -ng;
@@ -39,7 +39,8 @@ KDPM_HD KDPM_INLINE SurfacePoint surface_at(const GeometryView& g, const Ray& ra
 // place every pass and the photon shooter take the albedo from); mid grey for an index past the
 // table (a hand-built scene without materials; a loaded file's indices are all checked).
 // `uv_footprint`: the filter width in texture coordinates, 0 when unknown (finest level).
-KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& g, const Hit& hit, float uv_footprint = 0.0f) {
+KDPM_HD KDPM_INLINE MaterialRecord material_of(const GeometryView& scene, const Hit& hit, float uv_footprint = 0.0f) {
+    const GeometryView& g = object_of(scene, hit);
     const std::uint32_t index = g.triangles[hit.triangle].material;
     MaterialRecord m{};
     if (index < g.material_count) {

@@ -11,6 +11,8 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
+#include "runtime/geometry/instance_hit.h"
+#include "runtime/geometry/ray.h"
 
 namespace kdpm {
 
@@ -76,12 +78,13 @@ KDPM_HD KDPM_INLINE glm::vec2 uv_at(const TriangleUVs& t, float u, float v) {
     return glm::vec2(w * t.uv[0][0] + u * t.uv[1][0] + v * t.uv[2][0], w * t.uv[0][1] + u * t.uv[1][1] + v * t.uv[2][1]);
 }
 
-// A filter width in world units at a point of `triangle` as a width in texture coordinates: the
-// triangle's uv area over its world area, square-rooted. 0 (finest level) without uvs.
-KDPM_HD KDPM_INLINE float uv_footprint(const GeometryView& g, std::uint32_t triangle, float world_width) {
+// A filter width in world units at the hit as a width in texture coordinates: the triangle's uv
+// area over its world area, square-rooted. 0 (finest level) without uvs.
+KDPM_HD KDPM_INLINE float uv_footprint(const GeometryView& scene, const Hit& hit, float world_width) {
+    const GeometryView& g = object_of(scene, hit);
     if (g.uvs == nullptr) return 0.0f;
-    const TriangleRecord& t = g.triangles[triangle];
-    const TriangleUVs& q = g.uvs[triangle];
+    const TriangleRecord t = world_triangle(scene, hit);
+    const TriangleUVs& q = g.uvs[hit.triangle];
     const float world = glm::length(glm::cross(glm::vec3(t.e1[0], t.e1[1], t.e1[2]), glm::vec3(t.e2[0], t.e2[1], t.e2[2])));
     const float du1 = q.uv[1][0] - q.uv[0][0], dv1 = q.uv[1][1] - q.uv[0][1];
     const float du2 = q.uv[2][0] - q.uv[0][0], dv2 = q.uv[2][1] - q.uv[0][1];

@@ -10,7 +10,7 @@
 #include "formats/container_reader.h"
 #include "formats/tree_validation.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 
 namespace kdpm::test {
 

@@ -9,7 +9,7 @@
 
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/geometry/ray.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_view.h"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/photons/photon_shooter.h"
 #include "runtime/photons/shoot_on_cpu.h"
 #include "tests/photons/shooting_scenes.h"

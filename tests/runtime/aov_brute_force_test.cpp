@@ -2,7 +2,7 @@
 // camera ray over every triangle (no kd-tree).
 #include <catch2/catch.hpp>
 
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/renderer.h"
 #include "tests/runtime/built_scene.h"

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <random>
 
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/renderer.h"
 #include "runtime/shading/direct_light.h"
 #include "runtime/shading/light_power_table.h"

@@ -10,7 +10,7 @@ prefix=$work/prefix
 
 cmake --install "$build" --prefix "$prefix" >/dev/null
 for f in bin/kdpm-render bin/kdpm-build-geometry include/kdpm/formats/container_reader.h \
-         include/kdpm/runtime/geometry/kd_traversal.h lib/cmake/kdpm/kdpm-config.cmake; do
+         include/kdpm/runtime/geometry/scene_traversal.h lib/cmake/kdpm/kdpm-config.cmake; do
   [ -e "$prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done
 [ ! -e "$prefix/include/kdpm/runtime/view" ] || { echo "the viewer's headers should not be installed"; exit 1; }

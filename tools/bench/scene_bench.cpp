@@ -15,7 +15,7 @@
 #include "runtime/backend/cuda_device.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/photons/knn_search.h"
 #include "runtime/photons/photon_map_file.h"
 #include "runtime/photons/photon_shooter.h"

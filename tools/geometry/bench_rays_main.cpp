@@ -15,7 +15,7 @@
 #include "runtime/backend/cpu_parallel_for.h"
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/camera.h"
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"

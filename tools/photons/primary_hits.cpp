@@ -1,7 +1,7 @@
 #include "tools/photons/primary_hits.h"
 
 #include "runtime/backend/cpu_parallel_for.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/camera.h"
 
 namespace kdpm::photon_tools {

@@ -18,7 +18,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/photons/irradiance_lookup.h"
 #include "runtime/photons/radiance_estimate.h"
 #include "runtime/render/final_gather/gather_lookup.h"

@@ -11,7 +11,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/passes/trace_pass.h"
@@ -37,7 +37,7 @@ KDPM_HD KDPM_INLINE bool camera_path_vertex(const GeometryView& geometry, const 
     if (!out.hit.found()) return false;
     out.surface = surface_at(geometry, ray, out.hit);
     const float footprint =
-        vertex == 0 ? uv_footprint(geometry, out.hit.triangle, out.hit.t * camera.pixel_spread()) : 0.0f;
+        vertex == 0 ? uv_footprint(geometry, out.hit, out.hit.t * camera.pixel_spread()) : 0.0f;
     out.material = material_of(geometry, out.hit, footprint);
     return true;
 }

@@ -15,7 +15,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/passes/camera_path_vertex.h"
 #include "runtime/shading/color.h"
 #include "runtime/shading/counter_random.h"

@@ -11,7 +11,7 @@
 #include "formats/geometry_layout.h"
 #include "formats/host_device.h"
 #include "runtime/geometry/geometry_view.h"
-#include "runtime/geometry/kd_traversal.h"
+#include "runtime/geometry/scene_traversal.h"
 #include "runtime/render/camera.h"
 #include "runtime/render/frame_buffers.h"
 #include "runtime/render/tile_order.h"
@@ -35,7 +35,7 @@ KDPM_HD KDPM_INLINE void write_first_hit_aovs(const GeometryView& geometry, cons
     if (frame.position) frame.position[pixel] = found ? s.position : glm::vec3(0.0f);
     if (frame.triangle)
         frame.triangle[pixel] =
-            found ? static_cast<std::int32_t>(geometry.triangles[hit.triangle].source_index) : -1;
+            found ? static_cast<std::int32_t>(object_of(geometry, hit).triangles[hit.triangle].source_index) : -1;
 }
 
 struct TracePass {
@@ -83,7 +83,7 @@ struct TracePass {
             const SurfacePoint s = surface_at(geometry, ray, hit);
             if (first) write_aovs(pixel, ray, hit, &s);
             // Camera rays filter the texture over their pixel's footprint; later rays read level 0.
-            const float footprint = r.depth == 0 ? uv_footprint(geometry, hit.triangle, hit.t * camera.pixel_spread()) : 0.0f;
+            const float footprint = r.depth == 0 ? uv_footprint(geometry, hit, hit.t * camera.pixel_spread()) : 0.0f;
             const MaterialRecord m = material_of(geometry, hit, footprint);
             if (s.front) emitted += r.throughput * to_vec3(m.emission);
 

@@ -1,9 +1,13 @@
 // kdpm-inspect FILE: what is this kdpm file, what does it hold, and what made it.
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 #include "formats/container_reader.h"
+#include "formats/instance_layout.h"
 #include "formats/section_ids.h"
 #include "tools/cli/args.h"
 #include "tools/cli/json_text.h"
@@ -33,7 +37,34 @@ std::string hex(std::uint64_t v) {
     return b;
 }
 
-void print_text(const ContainerReader& r) {
+// The objects a scene of instances places, each with its state now: "current" (its content hash
+// is the one the scene was built with), "changed since the scene was built", or why it cannot be
+// read. Only headers are read: kdpm-validate checks the objects in full.
+struct ObjectState {
+    std::string path;
+    std::uint64_t hash;
+    std::uint32_t triangles;
+    std::string state;
+};
+
+std::vector<ObjectState> object_states(const ContainerReader& r, const std::filesystem::path& scene) {
+    std::vector<ObjectState> out;
+    const SectionEntry* e = r.find(section::geo_objects);
+    if (!e || e->element_size != sizeof(ObjectReference)) return out;
+    for (const ObjectReference& o : r.section<ObjectReference>(section::geo_objects)) {
+        ObjectState s{std::string(o.path, strnlen(o.path, kObjectPathBytes)), o.content_hash, o.triangle_count, ""};
+        try {
+            const auto object = ContainerReader::open(scene.parent_path() / s.path, FileKind::geometry);
+            s.state = object.header().section_table_checksum == o.content_hash ? "current" : "changed since the scene was built";
+        } catch (const std::exception& ex) {
+            s.state = ex.what();
+        }
+        out.push_back(std::move(s));
+    }
+    return out;
+}
+
+void print_text(const ContainerReader& r, const std::filesystem::path& path) {
     const auto& h = r.header();
     const auto& info = file_kind_info(r.kind());
     std::cout << r.name() << ": kdpm " << info.name << ", format " << h.version_major << "." << h.version_minor
@@ -54,9 +85,13 @@ void print_text(const ContainerReader& r) {
         for (const auto& [k, v] : m.parameters) std::cout << "  param    " << k << " = " << v << "\n";
         for (const auto& [k, v] : m.statistics) std::cout << "  stat     " << k << " = " << v << "\n";
     }
+    const auto objects = object_states(r, path);
+    if (!objects.empty()) std::cout << "objects:\n";
+    for (const ObjectState& o : objects)
+        std::cout << "  " << o.path << ": " << o.triangles << " triangles, xxh3 " << hex(o.hash) << ", " << o.state << "\n";
 }
 
-void print_json(const ContainerReader& r) {
+void print_json(const ContainerReader& r, const std::filesystem::path& path) {
     using cli::json_string;
     const auto& h = r.header();
     const auto& info = file_kind_info(r.kind());
@@ -73,6 +108,15 @@ void print_json(const ContainerReader& r) {
         first = false;
     }
     o << "\n  ]";
+    const auto objects = object_states(r, path);
+    if (!objects.empty()) {
+        o << ",\n  \"objects\": [";
+        for (std::size_t i = 0; i < objects.size(); ++i)
+            o << (i ? ",\n" : "\n") << "    {\"path\": " << json_string(objects[i].path) << ", \"triangles\": "
+              << objects[i].triangles << ", \"xxh3\": \"" << hex(objects[i].hash) << "\", \"state\": "
+              << json_string(objects[i].state) << "}";
+        o << "\n  ]";
+    }
     if (r.has_metadata()) {
         Metadata m = r.metadata();
         o << ",\n  \"metadata\": " << metadata_to_json(m);
@@ -91,7 +135,7 @@ int main(int argc, char** argv) {
     args.parse(argc, argv);
     return cli::run_tool("kdpm-inspect", [&] {
         auto reader = ContainerReader::open(path);
-        json ? print_json(reader) : print_text(reader);
+        json ? print_json(reader, path) : print_text(reader, path);
         return 0;
     });
 }

@@ -4,9 +4,11 @@
 
 #include "formats/container_reader.h"
 #include "formats/output_file.h"
+#include "formats/section_ids.h"
 #include "formats/tree_validation.h"
 #include "tools/cli/args.h"
 #include "tools/cli/run_tool.h"
+#include "runtime/geometry/geometry_file.h"
 
 using namespace kdpm;
 
@@ -25,6 +27,9 @@ int main(int argc, char** argv) {
             throw FormatError(path + ": a temporary left by an interrupted kdpm write; safe to delete");
         auto reader = ContainerReader::open(path);
         validate_file(reader, options);
+        // A scene of instances is sound only with its objects: each opened and checked, its
+        // content hash compared with the scene's.
+        if (reader.find(section::geo_instances)) GeometryFile::open(path);
         if (!quiet) std::cout << path << ": ok (" << file_kind_info(reader.kind()).name << ")\n";
         return 0;
     });

@@ -95,6 +95,10 @@ void frame_camera(Scene& scene) {
     }
     if (!any)
         for (int a = 0; a < 3; ++a) lo[a] = -1.0f, hi[a] = 1.0f;
+    frame_camera_on(scene, lo, hi);
+}
+
+void frame_camera_on(Scene& scene, const float (&lo)[3], const float (&hi)[3]) {
     float center[3], radius = 0.0f;
     for (int a = 0; a < 3; ++a) {
         center[a] = 0.5f * (lo[a] + hi[a]);

@@ -42,6 +42,8 @@ void add_emissive_triangle_lights(Scene& scene);
 
 // Sets a camera that sees the whole scene from the front along the up axis (bare meshes).
 void frame_camera(Scene& scene);
+// The same camera for a box (a scene of instances: the placed objects' world box).
+void frame_camera_on(Scene& scene, const float (&lo)[3], const float (&hi)[3]);
 
 // Surface areas (the SAH cost, light areas) are products of two extents: beyond this coordinate
 // they overflow a float and every cost turns inf or NaN.

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -12,6 +13,7 @@
 
 #include "builders/geometry/import/isolated_import.h"
 #include "builders/geometry/import/texture_import.h"
+#include "formats/affine_map.h"
 #include "formats/camera_check.h"
 #include "formats/format_error.h"
 #include "formats/scene_limits.h"
@@ -76,7 +78,8 @@ Card parse_card(std::string json, const std::string& name) {
         card.fail(std::string("not valid JSON: ") + rapidjson::GetParseError_En(card.doc.GetParseError()) +
                   " at byte " + std::to_string(card.doc.GetErrorOffset()));
     if (!card.doc.IsObject()) card.fail("a scene card must be a JSON object");
-    card.only_keys(card.doc, "the card", {"mesh", "shared_scene", "up", "camera", "lights", "photons", "bounces", "k", "comment"});
+    card.only_keys(card.doc, "the card",
+                   {"mesh", "shared_scene", "instances", "up", "camera", "lights", "photons", "bounces", "k", "comment"});
     return card;
 }
 
@@ -154,7 +157,115 @@ void apply_card(const Card& card, Scene& scene) {
     }
 }
 
+
+// One "instances" entry's map: T(translate) * R(rotate) * S(scale), or "matrix" (12 numbers,
+// 3x4 row-major) alone.
+Affine instance_map(const Card& card, const Value& e, std::size_t index) {
+    const std::string which = "instance " + std::to_string(index);
+    if (e.HasMember("matrix")) {
+        if (e.HasMember("translate") || e.HasMember("rotate") || e.HasMember("scale"))
+            card.fail(which + ": \"matrix\" stands alone, without \"translate\", \"rotate\" or \"scale\"");
+        const Value& m = e["matrix"];
+        if (!m.IsArray() || m.Size() != 12) card.fail(which + ": \"matrix\" must be 12 numbers (3x4, row by row)");
+        Affine a{};
+        for (unsigned i = 0; i < 12; ++i) {
+            if (!m[i].IsNumber()) card.fail(which + ": \"matrix\" must be 12 numbers (3x4, row by row)");
+            a.m[i / 4][i % 4] = static_cast<float>(m[i].GetDouble());
+        }
+        return a;
+    }
+    float t[3] = {0, 0, 0}, s[3] = {1, 1, 1}, axis[3] = {0, 1, 0};
+    double degrees = 0.0;
+    if (e.HasMember("translate")) card.vec3(e["translate"], "translate", t);
+    if (e.HasMember("scale")) {
+        if (e["scale"].IsNumber()) s[0] = s[1] = s[2] = static_cast<float>(e["scale"].GetDouble());
+        else card.vec3(e["scale"], "scale", s);
+    }
+    if (e.HasMember("rotate")) {
+        const Value& r = e["rotate"];
+        if (!r.IsObject() || !r.HasMember("axis") || !r.HasMember("degrees") || !r["degrees"].IsNumber())
+            card.fail(which + ": \"rotate\" must be {\"axis\": [x, y, z], \"degrees\": d}");
+        card.only_keys(r, "a rotation", {"axis", "degrees"});
+        card.vec3(r["axis"], "axis", axis);
+        degrees = r["degrees"].GetDouble();
+        if (!std::isfinite(degrees)) card.fail(which + ": \"degrees\" must be finite");
+    }
+    const double len = std::sqrt(double(axis[0]) * axis[0] + double(axis[1]) * axis[1] + double(axis[2]) * axis[2]);
+    if (!(len > 0.0) || !std::isfinite(len)) card.fail(which + ": the rotation axis must not be zero");
+    const double x = axis[0] / len, y = axis[1] / len, z = axis[2] / len;
+    const double a = degrees * 3.14159265358979323846 / 180.0, c = std::cos(a), sn = std::sin(a), k = 1.0 - c;
+    const double r[3][3] = {{c + x * x * k, x * y * k - z * sn, x * z * k + y * sn},
+                            {y * x * k + z * sn, c + y * y * k, y * z * k - x * sn},
+                            {z * x * k - y * sn, z * y * k + x * sn, c + z * z * k}};
+    Affine m{};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) m.m[i][j] = static_cast<float>(r[i][j] * s[j]);
+        m.m[i][3] = t[i];
+    }
+    return m;
+}
+
+InstanceCard instance_card(const Card& card, const fs::path& card_path) {
+    const Value& list = card.doc["instances"];
+    if (card.doc.HasMember("mesh") || card.doc.HasMember("shared_scene"))
+        card.fail("a card places \"instances\" or names a \"mesh\", not both (build the mesh as an object and place it)");
+    if (!list.IsArray() || list.Empty()) card.fail("\"instances\" must be a non-empty array");
+    InstanceCard out;
+    for (unsigned i = 0; i < list.Size(); ++i) {
+        const Value& e = list[i];
+        if (!e.IsObject()) card.fail("each instance must be an object");
+        card.only_keys(e, "an instance", {"object", "translate", "rotate", "scale", "matrix", "repeat", "comment"});
+        if (!e.HasMember("object") || !e["object"].IsString() || e["object"].GetStringLength() == 0)
+            card.fail("instance " + std::to_string(i) + " needs \"object\": the path of a .kdg, relative to the card");
+        const fs::path object = card_path.parent_path() / e["object"].GetString();
+        std::uint32_t index = 0;
+        while (index < out.objects.size() && out.objects[index] != object) ++index;
+        if (index == out.objects.size()) out.objects.push_back(object);
+        const Affine m = instance_map(card, e, i);
+        if (!usable_affine(m)) card.fail("instance " + std::to_string(i) + ": its transform is not finite or not invertible");
+        // "repeat": the placement copied on a grid, each copy moved by step * (i, j, k).
+        std::uint32_t count[3] = {1, 1, 1};
+        float step[3] = {0, 0, 0};
+        if (e.HasMember("repeat")) {
+            const Value& r = e["repeat"];
+            if (!r.IsObject() || !r.HasMember("count") || !r.HasMember("step"))
+                card.fail("instance " + std::to_string(i) + ": \"repeat\" must be {\"count\": [nx, ny, nz], \"step\": [x, y, z]}");
+            card.only_keys(r, "a repeat", {"count", "step"});
+            const Value& c = r["count"];
+            if (!c.IsArray() || c.Size() != 3) card.fail("\"count\" must be an array of 3 integers");
+            for (unsigned a = 0; a < 3; ++a) count[a] = card.count(c[a], "count", 1, kMaxInstances);
+            card.vec3(r["step"], "step", step);
+        }
+        const std::uint64_t copies = std::uint64_t{count[0]} * count[1] * count[2];
+        if (out.instances.size() + copies > kMaxInstances)
+            card.fail("the card places more than " + std::to_string(kMaxInstances) + " instances");
+        for (std::uint32_t a = 0; a < count[0]; ++a)
+            for (std::uint32_t b = 0; b < count[1]; ++b)
+                for (std::uint32_t c = 0; c < count[2]; ++c) {
+                    InstanceRecord rec{};
+                    std::memcpy(rec.world_from_object, m.m, sizeof rec.world_from_object);
+                    rec.world_from_object[3] += step[0] * a;
+                    rec.world_from_object[7] += step[1] * b;
+                    rec.world_from_object[11] += step[2] * c;
+                    rec.object = index;
+                    out.instances.push_back(rec);
+                }
+    }
+    return out;
+}
+
 }  // namespace
+
+bool card_places_instances(const fs::path& card) { return is_scene_card(card) && read_card(card).doc.HasMember("instances"); }
+
+InstanceCard read_instance_card(const fs::path& card_path) {
+    const Card card = read_card(card_path);
+    InstanceCard out = instance_card(card, card_path);
+    out.card_camera = card.doc.HasMember("camera");
+    // The camera, when the card has none, is framed later from the placed objects' box.
+    apply_card(card, out.settings);
+    return out;
+}
 
 void apply_scene_card(const std::string& json, const std::string& name, Scene& scene) {
     apply_card(parse_card(json, name), scene);
@@ -169,6 +280,7 @@ bool is_scene_card(const fs::path& input) {
 fs::path card_mesh_path(const fs::path& card_path) {
     const Card card = read_card(card_path);
     const Value& doc = card.doc;
+    if (doc.HasMember("instances")) card.fail("a card of \"instances\" has no mesh of its own");
     if (!doc.HasMember("mesh") || !doc["mesh"].IsString()) card.fail("\"mesh\" (a path relative to the card) is required");
     if (doc.HasMember("shared_scene")) {
         if (!doc["shared_scene"].IsString()) card.fail("\"shared_scene\" must be a string");

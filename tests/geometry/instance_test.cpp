@@ -3,8 +3,10 @@
 // the same scene flattened (every triangle mapped into the world, one tree).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "runtime/geometry/instance_hit.h"
 #include "runtime/geometry/scene_traversal.h"
 #include "tests/geometry/random_scenes.h"
+#include "tests/support/run_command.h"
 #include "tests/support/temp_dir.h"
 
 using namespace kdpm;
@@ -254,5 +257,75 @@ TEST_CASE("a scene of one mesh keeps its own tree: no instance walk", "[instance
         CHECK(h.triangle == flat.triangle);
         CHECK(h.instance == kNoInstance);
         if (flat.found()) CHECK(h.t == flat.t);
+    }
+}
+
+TEST_CASE("kdpm-inspect lists a scene's objects and says which changed", "[instances][tools]") {
+    Fixture f;
+    const std::string scene = (f.dir / "scene.kdg").string();
+    auto text = test::run_tool("kdpm-inspect " + scene);
+    CHECK(text.exit_code == 0);
+    CHECK_THAT(text.output, Catch::Contains("a.kdg: 300 triangles") && Catch::Contains("b.kdg: 200 triangles") &&
+                                Catch::Contains("current"));
+
+    build_geometry_file(object_scene(300, 99, false), KdBuildParams{}).writer.write(f.dir / "a.kdg");
+    text = test::run_tool("kdpm-inspect --json " + scene);
+    CHECK(text.exit_code == 0);
+    CHECK_THAT(text.output, Catch::Contains("\"path\": \"a.kdg\"") && Catch::Contains("changed since the scene was built"));
+}
+
+TEST_CASE("kdpm-validate checks a scene's objects: a changed one fails in one line", "[instances][tools]") {
+    Fixture f;
+    const std::string scene = (f.dir / "scene.kdg").string();
+    CHECK(test::run_tool("kdpm-validate " + scene).exit_code == 0);
+    build_geometry_file(object_scene(300, 99, false), KdBuildParams{}).writer.write(f.dir / "a.kdg");
+    const auto run = test::run_tool("kdpm-validate " + scene);
+    CHECK(run.exit_code != 0);
+    CHECK_THAT(run.output, Catch::Contains("has changed since the scene was built"));
+}
+
+TEST_CASE("kdpm-build-geometry makes a scene of instances from a card, grids included", "[instances][tools]") {
+    Fixture f;
+    {
+        std::ofstream card(f.dir / "grid.json");
+        card << R"({ "instances": [
+            { "object": "a.kdg", "rotate": {"axis": [0, 1, 0], "degrees": 90}, "scale": 2 },
+            { "object": "b.kdg", "translate": [5, 0, 0], "repeat": {"count": [3, 1, 4], "step": [1.5, 0, 2]} } ] })";
+    }
+    std::filesystem::create_directories(f.dir / "scenes");
+    const std::string out = (f.dir / "scenes" / "grid.kdg").string();
+    const auto run = test::run_tool("kdpm-build-geometry " + (f.dir / "grid.json").string() + " -o " + out);
+    REQUIRE(run.exit_code == 0);
+    CHECK_THAT(run.output, Catch::Contains("13 instances of 2 objects"));
+    const GeometryFile scene = GeometryFile::open(out);  // object paths stored relative to scenes/
+    const GeometryView& g = scene.view();
+    REQUIRE(g.instance_count == 13);
+    // The first: rotated a quarter turn about y and doubled: x -> -z.
+    const Affine& m = g.instances[0].world_from_object;
+    CHECK(m.m[0][0] == Approx(0.0f).margin(1e-6));
+    CHECK(m.m[2][0] == Approx(-2.0f));
+    // The grid's last copy: moved by step * (2, 0, 3).
+    CHECK(g.instances[12].world_from_object.m[0][3] == Approx(8.0f));
+    CHECK(g.instances[12].world_from_object.m[2][3] == Approx(6.0f));
+    CHECK(g.light_count == 12);
+    std::uint32_t found = 0, differ = 0;
+    for (const Ray& r : world_rays(5000, 8)) {
+        const Hit h = closest_hit(g, r), b = closest_hit_brute_force(g, r);
+        found += b.found();
+        differ += h.found() != b.found() || (b.found() && h.t != b.t && (h.instance != b.instance || h.triangle != b.triangle));
+    }
+    CHECK(found > 200);
+    CHECK(differ <= 1);
+
+    for (const char* bad : {R"({"instances": [{"object": "a.kdg", "scale": 0}]})",
+                            R"({"mesh": "x.obj", "instances": [{"object": "a.kdg"}]})",
+                            R"({"instances": [{"object": "missing.kdg"}]})",
+                            R"({"instances": [{"object": "a.kdg", "repeat": {"count": [0, 1, 1], "step": [1, 0, 0]}}]})"}) {
+        std::ofstream(f.dir / "bad.json") << bad;
+        const auto refused = test::run_tool("kdpm-build-geometry " + (f.dir / "bad.json").string() + " -o " +
+                                            (f.dir / "bad.kdg").string());
+        CHECK(refused.exit_code != 0);
+        CHECK(std::count(refused.output.begin(), refused.output.end(), '\n') == 1);
+        CHECK_FALSE(std::filesystem::exists(f.dir / "bad.kdg"));
     }
 }

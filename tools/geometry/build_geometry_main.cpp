@@ -62,7 +62,10 @@ int main(int argc, char** argv) {
         }();
         if (!quiet)
             for (const std::string& w : built.warnings) std::fprintf(stderr, "kdpm-build-geometry: warning: %s\n", w.c_str());
-        if (!quiet) {
+        if (!quiet && built.instances > 0) {
+            std::printf("%s: %zu instances of %zu objects, %zu triangles placed, %.0f ms\n", output.c_str(),
+                        built.instances, built.objects, built.triangles, built.build_ms);
+        } else if (!quiet) {
             const KdTreeStats& s = built.stats;
             std::error_code ec;
             const auto bytes = std::filesystem::file_size(output, ec);

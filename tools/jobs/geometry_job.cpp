@@ -4,6 +4,7 @@
 #include <span>
 
 #include "builders/geometry/geometry_file_builder.h"
+#include "builders/geometry/instanced_scene_builder.h"
 #include "builders/geometry/scene_card.h"
 #include "formats/output_file.h"
 
@@ -40,6 +41,21 @@ GeometryJobResult build_and_write(const Scene& scene, const std::filesystem::pat
 GeometryJobResult build_geometry_job(const std::filesystem::path& input, const std::filesystem::path& output,
                                      const KdBuildParams& params, const std::function<void(double)>& progress) {
     std::vector<std::filesystem::path> inputs{input};
+    if (card_places_instances(input)) {
+        const InstanceCard card = read_instance_card(input);
+        inputs.insert(inputs.end(), card.objects.begin(), card.objects.end());
+        check_output_destination(output, inputs);
+        const auto start = std::chrono::steady_clock::now();
+        InstancedSceneBuild build = build_instanced_scene(card, input, output);
+        build.writer.write(output);
+        GeometryJobResult result;
+        result.triangles = build.placed_triangles;
+        result.instances = card.instances.size();
+        result.objects = card.objects.size();
+        result.build_ms = ms_since(start);
+        if (progress) progress(1.0);
+        return result;
+    }
     if (is_scene_card(input)) inputs.push_back(card_mesh_path(input));
     check_output_destination(output, inputs);
     const auto start = std::chrono::steady_clock::now();

@@ -18,10 +18,11 @@ struct GeometryJobResult {
     KdTreeStats stats;
     std::vector<std::string> warnings;  // one line each: import, repeated triangles, a huge leaf
     double import_ms = 0.0, build_ms = 0.0;
+    std::size_t instances = 0, objects = 0;  // a card of instances: placements, distinct object files
 };
 
 // Checks the destination before any work, imports `input`, builds and writes `output` through
-// the output discipline. Throws FormatError / std::invalid_argument with one line.
+// the output discipline. A card of instances makes a scene that places its object files. Throws FormatError / std::invalid_argument with one line.
 GeometryJobResult build_geometry_job(const std::filesystem::path& input, const std::filesystem::path& output,
                                      const KdBuildParams& params, const std::function<void(double)>& progress = {});
 

@@ -63,8 +63,9 @@ int main(int argc, char** argv) {
         if (!quiet)
             for (const std::string& w : built.warnings) std::fprintf(stderr, "kdpm-build-geometry: warning: %s\n", w.c_str());
         if (!quiet && built.instances > 0) {
-            std::printf("%s: %zu instances of %zu objects, %zu triangles placed, %.0f ms\n", output.c_str(),
-                        built.instances, built.objects, built.triangles, built.build_ms);
+            std::printf("%s: %zu instance%s of %zu object%s, %zu triangles placed, %.0f ms\n", output.c_str(),
+                        built.instances, built.instances == 1 ? "" : "s", built.objects, built.objects == 1 ? "" : "s",
+                        built.triangles, built.build_ms);
         } else if (!quiet) {
             const KdTreeStats& s = built.stats;
             std::error_code ec;

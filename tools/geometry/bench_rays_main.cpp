@@ -16,6 +16,7 @@
 #include "runtime/backend/thread_limit.h"
 #include "runtime/geometry/geometry_file.h"
 #include "runtime/geometry/scene_traversal.h"
+#include "runtime/geometry/surface_normal.h"
 #include "runtime/render/camera.h"
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"
@@ -50,13 +51,14 @@ RaySets make_rays(const GeometryFile& file, std::uint32_t size) {
         const Ray& p = s.primary[i];
         const Hit h = closest_hit_kd(g, p);
         if (!h.found()) continue;
-        const TriangleRecord& t = g.triangles[h.triangle];
-        glm::vec3 n = glm::normalize(glm::cross(glm::vec3(t.e1[0], t.e1[1], t.e1[2]), glm::vec3(t.e2[0], t.e2[1], t.e2[2])));
+        glm::vec3 n = geometric_normal(g.triangles[h.triangle]);
         if (glm::dot(n, p.direction) > 0.0f) n = -n;
         const glm::vec3 o = offset_origin(p.origin + h.t * p.direction, n, offset, true);
         s.bounce.push_back(Ray{o, 0.0f, cosine_direction(n, counter_random(7, i, 0, 0), counter_random(7, i, 0, 1)), INFINITY});
         if (g.light_count == 0) continue;
         const AreaLightRecord& l = g.lights[i % g.light_count];
+        // Not point_on_light: this folds a triangle's sample (u + v > 1) where point_on_light warps
+        // it by the square root; both are uniform, but the bench's rays must stay as they are.
         float u = counter_random(9, i, 0, 0), v = counter_random(9, i, 0, 1);
         if (l.shape == static_cast<std::uint32_t>(LightShape::triangle) && u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
         const glm::vec3 q = glm::vec3(l.p0[0], l.p0[1], l.p0[2]) + u * glm::vec3(l.e1[0], l.e1[1], l.e1[2]) +

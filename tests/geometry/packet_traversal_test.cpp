@@ -115,26 +115,8 @@ TEST_CASE("packets of rays return the single-ray walk's hits bit for bit on rand
 }
 
 TEST_CASE("packets agree with single rays at the walk's edge cases", "[geometry][traversal][packets]") {
-    // Axis-aligned triangles on a grid: split planes at exact coordinates the rays start on.
-    std::vector<TriangleRecord> tris;
-    for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 8; ++j) {
-            const float x = static_cast<float>(i) * 0.125f, y = static_cast<float>(j) * 0.125f;
-            const float a[3] = {x, y, 0.5f}, b[3] = {x + 0.125f, y, 0.5f}, c[3] = {x, y + 0.125f, 0.5f};
-            tris.push_back(make_triangle(a, b, c, 0, static_cast<std::uint32_t>(tris.size())));
-            // A twin that differs only in the sign of a zero (no exact copy, which the builder
-            // drops): every ray that hits one hits both at the same t, a tie the single-ray walk
-            // breaks by test order.
-            TriangleRecord twin = tris.back();
-            twin.e1[2] = -0.0f;
-            twin.source_index = static_cast<std::uint32_t>(tris.size());
-            tris.push_back(twin);
-            const float d[3] = {x, 0.25f, y}, e[3] = {x + 0.125f, 0.25f, y}, f[3] = {x, 0.25f, y + 0.125f};
-            tris.push_back(make_triangle(d, e, f, 0, static_cast<std::uint32_t>(tris.size())));
-        }
-    const auto soup = test::random_soup(400, 5, 0.05f);
-    tris.insert(tris.end(), soup.begin(), soup.end());
-    const auto bytes = test::build_bytes(scene_from_triangles(tris));
+    // The grid with twins: split planes at exact coordinates the rays start on, and exact ties.
+    const auto bytes = test::build_bytes(scene_from_triangles(test::grid_scene(true)));
     const GeometryFile file = GeometryFile::from_bytes(bytes, "grid.kdg");
     const GeometryView& g = file.view();
     std::mt19937 rng(3);

@@ -54,22 +54,6 @@ int wide_mismatches(const GeometryView& g, const std::vector<Ray>& rays) {
     return bad;
 }
 
-// Axis-aligned triangles on a grid, whose kd planes lie at exact coordinates, with a soup beside.
-std::vector<TriangleRecord> grid_scene() {
-    std::vector<TriangleRecord> tris;
-    for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 8; ++j) {
-            const float x = static_cast<float>(i) * 0.125f, y = static_cast<float>(j) * 0.125f;
-            const float a[3] = {x, y, 0.5f}, b[3] = {x + 0.125f, y, 0.5f}, c[3] = {x, y + 0.125f, 0.5f};
-            tris.push_back(make_triangle(a, b, c, 0, static_cast<std::uint32_t>(tris.size())));
-            const float d[3] = {x, 0.25f, y}, e[3] = {x + 0.125f, 0.25f, y}, f[3] = {x, 0.25f, y + 0.125f};
-            tris.push_back(make_triangle(d, e, f, 0, static_cast<std::uint32_t>(tris.size())));
-        }
-    const auto soup = test::random_soup(400, 5, 0.05f);
-    tris.insert(tris.end(), soup.begin(), soup.end());
-    return tris;
-}
-
 // The file's bytes with its geometry.wide records changed by `edit` (the other sections as they
 // are, checksums made anew), or without the section and as format 1.1 when edit is empty.
 std::vector<std::uint8_t> with_wide(const std::vector<std::uint8_t>& bytes,
@@ -131,7 +115,7 @@ TEST_CASE("the wide walk finds brute force's closest hits with both box tests", 
 }
 
 TEST_CASE("the wide walk finds brute force's hits at the kd planes' edge cases", "[geometry][traversal][wide]") {
-    const auto bytes = test::build_bytes(scene_from_triangles(grid_scene()));
+    const auto bytes = test::build_bytes(scene_from_triangles(test::grid_scene(false)));
     const GeometryFile file = GeometryFile::from_bytes(bytes, "grid.kdg");
     // Origins on split planes and on triangle edges, directions with zero components (the box
     // test's 1/d), and short segments ending on a plane.

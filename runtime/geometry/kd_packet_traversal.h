@@ -81,12 +81,7 @@ using S = Sse2Ops;
 
 // AVX2: eight lanes, compiled for AVX2 in this region only and run only where the CPU has it
 // (closest_hits checks once), so one binary runs on every x86-64.
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+KDPM_BEGIN_TARGET("avx2")
 struct Avx2Ops {
     using V = __m256;
     using VI = __m256i;
@@ -128,23 +123,14 @@ namespace avx2 {
 using S = Avx2Ops;
 #include "runtime/geometry/kd_packet_walk.inc"
 }  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+KDPM_END_TARGET
 
 // AVX-512: the whole packet in one vector, lane masks in mask registers. Its own region for the
 // same reason as AVX2's. AVX-512 brings fused multiply-add, and GCC contracts a plain multiply
 // feeding an add into one (rounding once where the scalar walk rounds twice) unless told
 // -ffp-contract=off: the arithmetic is spelled with explicit round-to-nearest, which no compiler
 // fuses, whatever the flags of the program that includes this header.
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx512f")
-#endif
+KDPM_BEGIN_TARGET("avx512f")
 struct Avx512Ops {
     using V = __m512;
     using VI = __m512i;
@@ -185,11 +171,7 @@ namespace avx512 {
 using S = Avx512Ops;
 #include "runtime/geometry/kd_packet_walk.inc"
 }  // namespace avx512
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+KDPM_END_TARGET
 
 using kdpm::cpu_has_avx2;  // runtime/geometry/cpu_features.h
 using kdpm::cpu_has_avx512;

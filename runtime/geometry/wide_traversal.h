@@ -79,12 +79,7 @@ struct B {
 }  // namespace scalar
 
 #if defined(KDPM_WIDE_AVX2)
-#if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
-#else
-#pragma GCC push_options
-#pragma GCC target("avx2")
-#endif
+KDPM_BEGIN_TARGET("avx2")
 namespace avx2 {
 
 struct B {
@@ -118,11 +113,7 @@ struct B {
 #include "runtime/geometry/wide_walk.inc"
 
 }  // namespace avx2
-#if defined(__clang__)
-#pragma clang attribute pop
-#else
-#pragma GCC pop_options
-#endif
+KDPM_END_TARGET
 #endif
 
 }  // namespace wide_detail

@@ -14,6 +14,14 @@ inline Affine identity_affine() {
     return Affine{{{1.0f, 0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f, 0.0f}}};
 }
 
+inline bool is_identity_affine(const Affine& a) {
+    const Affine id = identity_affine();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 4; ++j)
+            if (a.m[i][j] != id.m[i][j]) return false;
+    return true;
+}
+
 // Determinant of the linear part, in double (the invertibility test of files and cards).
 inline double affine_determinant(const Affine& a) {
     const auto& m = a.m;

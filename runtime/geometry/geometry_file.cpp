@@ -124,8 +124,23 @@ void GeometryFile::open_instances(const std::filesystem::path& folder) {
     parts->lights.assign(own_lights.begin(), own_lights.end());
     append_placed_lights(parts->views, parts->placements, parts->lights);
 
+    camera_ = reader_.record<CameraRecord>(section::geo_camera);
+    const GeometryInfo scene_info = reader_.record<GeometryInfo>(section::geo_info);
+    if (records.size() == 1 && is_identity_affine(parts->placements[0].world_from_object)) {
+        // One object placed as it is: its own tree, so that wrapping an asset in a scene costs no
+        // ray anything. Its hits name no instance; the scene's lights and defaults stay.
+        view_ = parts->views[records[0].object];
+        view_.lights = parts->lights.data();
+        view_.light_count = static_cast<std::uint32_t>(parts->lights.size());
+        view_.info.default_photons = scene_info.default_photons;
+        view_.info.default_bounces = scene_info.default_bounces;
+        view_.info.default_k = scene_info.default_k;
+        view_.info.up_axis = scene_info.up_axis;
+        instances_ = std::move(parts);
+        return;
+    }
     view_ = GeometryView{};
-    view_.info = reader_.record<GeometryInfo>(section::geo_info);
+    view_.info = scene_info;
     const InstanceNode& root = parts->nodes[0];
     for (int a = 0; a < 3; ++a) view_.info.bounds_min[a] = root.lo[a], view_.info.bounds_max[a] = root.hi[a];
     view_.lights = parts->lights.data();
@@ -136,7 +151,6 @@ void GeometryFile::open_instances(const std::filesystem::path& folder) {
     view_.instance_count = static_cast<std::uint32_t>(parts->placements.size());
     view_.instance_nodes = parts->nodes.data();
     view_.instance_node_count = static_cast<std::uint32_t>(parts->nodes.size());
-    camera_ = reader_.record<CameraRecord>(section::geo_camera);
     instances_ = std::move(parts);
 }
 

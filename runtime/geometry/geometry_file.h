@@ -29,7 +29,7 @@ public:
     // The content hash a scene of instances stores for this file: its section table's checksum,
     // which covers every section's checksum.
     std::uint64_t content_hash() const;
-    bool has_instances() const { return view_.instance_count != 0; }
+    bool has_instances() const { return instances_ != nullptr; }
 
     const GeometryView& view() const { return view_; }
     const GeometryInfo& info() const { return view_.info; }

@@ -18,6 +18,7 @@
 
 #include "formats/host_device.h"
 #include "runtime/geometry/cpu_features.h"
+#include "runtime/geometry/packet_box_test.h"
 #include "runtime/geometry/scene_traversal.h"
 #include "runtime/geometry/sse2_ops.h"
 
@@ -210,25 +211,98 @@ inline bool walk_packet(const GeometryView& g, const RayPacket& p, Hit* out, boo
 #endif
 }
 
+// A scene of instances, the packet together: it walks the instance BVH entering a node when any
+// lane still searching enters it (each lane within its nearest hit so far), nearer child first
+// along the first such lane; at each instance the lanes that enter its box go into the object's
+// frame by its one map, so a shared origin stays shared, and walk the object's tree as a packet.
+// Each lane's hit is the one the single-ray walk of the same instances finds (ties aside, the
+// object's binary walk being the packet's reference, as in a flat scene).
+template <bool kAnyHit>
+inline void walk_instances_packet(const GeometryView& g, const RayPacket& p, Hit* out, bool* occluded, PacketIsa simd) {
+    const std::uint32_t n = p.count;
+    std::uint32_t searching = 0;  // bit i: lane i may still find a (closer) hit
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if constexpr (kAnyHit) occluded[i] = false;
+        else out[i] = miss(p.tmax[i]);
+        searching |= 1u << i;
+    }
+    if (g.instance_node_count == 0 || n == 0) return;
+    PacketBoxTest boxes(p.origin, p.direction, p.tmin, p.tmax, n);
+    const bool shared = shares_origin(p);
+    std::uint32_t stack[kMaxInstanceBvhDepth + 1];
+    std::uint32_t top = 0;
+    stack[top++] = 0;
+    while (top > 0 && searching != 0) {
+        const std::uint32_t index = stack[--top];
+        const InstanceNode& node = g.instance_nodes[index];
+        const std::uint32_t lanes = boxes.entering(node.lo, node.hi) & searching;
+        if (lanes == 0) continue;
+        if (node.count == 0) {
+            // Far child first on the stack; "near" by the box centres along the first lane's ray.
+            const std::uint32_t lead = static_cast<std::uint32_t>(__builtin_ctz(lanes));
+            const glm::vec3 o(p.origin[0][lead], p.origin[1][lead], p.origin[2][lead]);
+            const glm::vec3 d(p.direction[0][lead], p.direction[1][lead], p.direction[2][lead]);
+            const InstanceNode& a = g.instance_nodes[node.first];
+            const InstanceNode& b = g.instance_nodes[node.first + 1];
+            auto along = [&](const InstanceNode& c) {
+                float s = 0.0f;
+                for (int k = 0; k < 3; ++k) s += (0.5f * (c.lo[k] + c.hi[k]) - o[k]) * d[k];
+                return s;
+            };
+            const float da = along(a), db = along(b);
+            stack[top++] = da <= db ? node.first + 1 : node.first;
+            stack[top++] = da <= db ? node.first : node.first + 1;
+            continue;
+        }
+        const InstancePlacement& placement = g.instances[node.first];
+        const GeometryView& object = g.objects[placement.object];
+        RayPacket local;
+        local.count = n;
+        const glm::vec3 o0 = apply_point(placement.object_from_world, glm::vec3(p.origin[0][0], p.origin[1][0], p.origin[2][0]));
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const Ray world = p.ray(i);
+            // A shared origin maps once (the same arithmetic: the same point in every lane).
+            const glm::vec3 o = shared ? o0 : apply_point(placement.object_from_world, world.origin);
+            const float t1 = lanes >> i & 1u ? boxes.tmax[i] : world.tmin;  // lanes outside the box search nothing
+            local.set(i, Ray{o, world.tmin, apply_vector(placement.object_from_world, world.direction), t1});
+        }
+        Hit hits[kPacketRays];
+        bool blocked[kPacketRays];
+        if (!walk_packet<kAnyHit>(object, local, hits, blocked, simd))
+            for (std::uint32_t i = 0; i < n; ++i)
+                if (lanes >> i & 1u) {
+                    if constexpr (kAnyHit) blocked[i] = occluded_kd(object, local.ray(i));
+                    else hits[i] = closest_hit_kd(object, local.ray(i));
+                }
+        for (std::uint32_t i = 0; i < n; ++i) {
+            if (!(lanes >> i & 1u)) continue;
+            if constexpr (kAnyHit) {
+                if (blocked[i]) {
+                    occluded[i] = true;
+                    searching &= ~(1u << i);
+                }
+            } else if (hits[i].found() && hits[i].t < boxes.tmax[i]) {
+                out[i] = hits[i];
+                out[i].instance = node.first;
+                boxes.tmax[i] = hits[i].t;
+            }
+        }
+    }
+}
+
 }  // namespace packet_detail
 
-// out[i] = closest_hit_kd(g, p.ray(i)) for i < p.count, bit for bit (the binary walk's hits).
-// A scene of instances: out[i] = closest_hit(g, p.ray(i)), ray by ray.
+// out[i] = closest_hit_kd(g, p.ray(i)) for i < p.count, bit for bit (the binary walk's hits); in a
+// scene of instances, each instance's object walked so.
 inline void closest_hits(const GeometryView& g, const RayPacket& p, Hit* out, PacketIsa simd = PacketIsa::best) {
-    if (g.instance_count != 0) {
-        for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit(g, p.ray(i));
-        return;
-    }
+    if (g.instance_count != 0) return packet_detail::walk_instances_packet<false>(g, p, out, nullptr, simd);
     if (packet_detail::walk_packet<false>(g, p, out, nullptr, simd)) return;
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = closest_hit_kd(g, p.ray(i));
 }
 
 // out[i] = occluded_kd(g, p.ray(i)) for i < p.count: shadow rays from one point.
 inline void occluded_rays(const GeometryView& g, const RayPacket& p, bool* out, PacketIsa simd = PacketIsa::best) {
-    if (g.instance_count != 0) {
-        for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded(g, p.ray(i));
-        return;
-    }
+    if (g.instance_count != 0) return packet_detail::walk_instances_packet<true>(g, p, nullptr, out, simd);
     if (packet_detail::walk_packet<true>(g, p, nullptr, out, simd)) return;
     for (std::uint32_t i = 0; i < p.count; ++i) out[i] = occluded_kd(g, p.ray(i));
 }

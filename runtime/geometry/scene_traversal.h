@@ -9,6 +9,7 @@
 
 #include "formats/host_device.h"
 #include "runtime/geometry/affine.h"
+#include "runtime/geometry/box_exit_slack.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/kd_traversal.h"
 #include "runtime/geometry/ray.h"
@@ -36,8 +37,7 @@ KDPM_HD KDPM_INLINE bool enter_box(const InstanceNode& n, const glm::vec3& o, co
             tn = tf;
             tf = s;
         }
-        // The exit is raised by 2^-20 of itself, as in the wide walk: rays grazing an edge enter.
-        tf *= 1.0f + 1.0f / 1048576.0f;
+        tf *= kExitSlack;  // rays grazing an edge enter
         if (tn > t0) t0 = tn;
         if (tf < t1) t1 = tf;
     }

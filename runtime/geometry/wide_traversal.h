@@ -12,6 +12,7 @@
 
 #include "formats/host_device.h"
 #include "formats/wide_layout.h"
+#include "runtime/geometry/box_exit_slack.h"
 #include "runtime/geometry/cpu_features.h"
 #include "runtime/geometry/geometry_view.h"
 #include "runtime/geometry/leaf_triangles_simd.h"
@@ -27,11 +28,7 @@ namespace kdpm {
 
 namespace wide_detail {
 
-// The exit distance a box test compares with is raised by 2^-20 of itself (Embree's conservative
-// slab test does the same): the few roundings of (box - origin) / direction then cannot turn a
-// grazing ray away from a box it enters, however far from the scene the ray starts, where the
-// boxes' margin covers only rays from within the scene's reach.
-inline constexpr float kExitSlack = 1.0f + 1.0f / 1048576.0f;
+using kdpm::kExitSlack;  // runtime/geometry/box_exit_slack.h
 
 // A direction component of (nearly) zero as a tiny one of the same sign: the box test's 1/d stays
 // finite and (box - origin) * (1/d) never 0 * inf. The tilt it makes is far below the margin

@@ -94,3 +94,34 @@ TEST_CASE("kdpm-bench shows CUDA's frames and shot beside the CPU's only where a
     CHECK_THAT(stopped, Catch::Contains("| sppm | 4 passes | 800.0 | 1.25 | 200.0 | - | - |  |"));
     CHECK_THAT(stopped, Catch::Contains("- CUDA frames stopped: CUDA kernel execution: out of memory"));
 }
+
+TEST_CASE("kdpm-bench's instance rows judge each ratio against its target", "[tools][bench][instances]") {
+    SceneBenchResult r = with_k32_frame("sponza", 100.0);
+    CHECK_THAT(format_report({r}, false), !Catch::Contains("instances of sponza"));  // not measured: no rows
+    InstanceFigures& f = r.instances;
+    f.measured = true;
+    f.instances = 10000;
+    f.placed_triangles = 10000ull * 66454;
+    f.object_build_ms = 1000.0;
+    f.scene_build_ms = 150.0;  // 1.15x the object's build alone
+    f.object_bytes = 10000000, f.scene_bytes = 640000;
+    f.one_as_is = {20.0, 20.1, 0.995};
+    f.one_moved = {25.0, 20.0, 1.25};
+    f.grid_inside = {39.0, 20.0, 1.95};
+    f.grid_overview = {60.0, 20.0, 3.0};
+    const std::string text = format_report({r}, false);
+    auto line = [&](const std::string& label) {  // the row's line, its columns one space apart
+        const std::size_t at = text.find(label);
+        if (at == std::string::npos) return std::string("absent");
+        std::string l = text.substr(at, text.find('\n', at) - at), squeezed;
+        for (char ch : l)
+            if (ch != ' ' || squeezed.empty() || squeezed.back() != ' ') squeezed += ch;
+        return squeezed;
+    };
+    CHECK(line("1 instance as it is") == "1 instance as it is 20.00 20.10 0.99x <= 1.02 met ");
+    CHECK_THAT(line("1 instance moved"), Catch::EndsWith("1.25x <= 1.02 MISSED "));
+    CHECK_THAT(line("10000 instances, camera"), Catch::EndsWith("1.95x <= 2.00 met "));
+    CHECK_THAT(line("10000 instances seen whole"), Catch::EndsWith("3.00x <= 2.00 MISSED "));
+    CHECK_THAT(text, Catch::Contains("1.150: MISSED"));
+    CHECK_THAT(text, Catch::Contains("64.0"));  // scene bytes per instance
+}

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
     bool markdown = false, quiet = false, no_peers = false, quick = false, all_threads_only = false;
-    int frames = 3, photons = 262144, size = 512;
+    int frames = 3, photons = 262144, size = 512, grid = 100;
     std::string scenes_arg = "cornell-box,sponza,conference", scenes_root, work;
     cli::Args args("kdpm-bench", "Reproduces the report's timing table on this machine, with peers in the same run.");
     args.flag("markdown", &markdown, "print Markdown tables")
@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
         .option("size", &size, "N", "image width and height (default 512)", 8, 4096)
         .option("repo", &scenes_root, "DIR", "folder holding scenes/ (default: the working directory or a parent, else found from the executable)")
         .option("work", &work, "DIR", "where the .kdg/.kdp files go (default: a temporary folder)")
+        .option("instance-grid", &grid, "N", "instance rows: the scene placed N x N times (default 100: 10^4 instances; 0: none)", 0, 1000)
         .flag("no-peers", &no_peers, "skip Embree and nanoflann")
         .flag("quick", &quick, "k = 2, 32, 256 only")
         .flag("all-threads-only", &all_threads_only, "no 1-thread rows (a GPU machine's check, short of time)")
@@ -61,6 +62,7 @@ int main(int argc, char** argv) {
             c.photons = static_cast<std::uint32_t>(photons);
             c.peers = !no_peers;
             c.quiet = quiet;
+            c.instance_grid = static_cast<std::uint32_t>(grid);
             c.build = cli::with_costs(KdBuildParams{}, costs);
             try {
                 results.push_back(bench::run_scene_bench(c));

@@ -201,6 +201,7 @@ std::string format_report(const std::vector<SceneBenchResult>& results, bool md)
         out += "\n";
         out += format_mode_frames(r.name, r.mode_frames, md);
         out += "\n";
+        if (r.instances.measured) out += format_instance_figures(r.name, r.instances, md) + "\n";
         out += target_lines(r);
     }
     return out;

@@ -27,6 +27,7 @@
 #include "runtime/shading/counter_random.h"
 #include "runtime/shading/diffuse.h"
 #include "runtime/shading/ray_offset.h"
+#include "tools/bench/camera_packets.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/peer_embree.h"
 #include "tools/bench/peer_embree_photons.h"
@@ -47,6 +48,8 @@ constexpr int kShortPassPairs = 15;
 // Three builds (ours high and fast, Embree HQ) shorter than this together are timed in as many
 // rounds as a short pass.
 constexpr double kShortBuildsMs = 10.0;
+
+std::string fmt_grid(std::uint32_t n) { return std::to_string(n) + " x " + std::to_string(n); }
 
 std::string thread_label(int t) { return std::to_string(t) + (t == 1 ? " thread" : " threads"); }
 
@@ -103,16 +106,6 @@ double trace_with_kdpm(const GeometryView& g, TracedRays& p) {
                     glm::vec3(r.direction[0], r.direction[1], r.direction[2]), INFINITY};
             p.hits[i] = closest_hit(g, ray);
         }, 256);
-    });
-}
-
-// The same camera rays as the renderer's CPU backend traces them: 16-ray packets of 4x4 pixels
-// (CameraPacketPass, launched as CpuDevice launches it), hits in row-major order like p's.
-double trace_packets_with_kdpm(const GeometryView& g, const PinholeCamera& camera, std::vector<Hit>& hits) {
-    hits.resize(static_cast<std::size_t>(camera.width) * camera.height);
-    return median_ms(1, [&] {
-        cpu_parallel_for(CameraPacketPass::work_items(camera.width, camera.height),
-                         CameraPacketPass{g, camera, 0, hits.data()}, 16);
     });
 }
 
@@ -219,12 +212,12 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
     std::vector<Hit> kdpm_packet_hits;
     const PinholeCamera camera = PinholeCamera::from_record(geometry.camera(), c.width, c.height, 1);  // primary_rays' camera
     (void)trace_with_kdpm(g, p);
-    (void)trace_packets_with_kdpm(g, camera, kdpm_packet_hits);
+    (void)trace_camera_packets(g, camera, kdpm_packet_hits);
 #ifndef KDPM_HAVE_EMBREE
     std::vector<double> ours, packets;
     for (int f = 0; f < c.frames; ++f) {
         ours.push_back(trace_with_kdpm(g, p));
-        packets.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
+        packets.push_back(trace_camera_packets(g, camera, kdpm_packet_hits));
     }
     peers.rays.ours_ms = median_of(ours);
     peers.packets.ours_ms = median_of(packets);
@@ -283,7 +276,7 @@ void compare_peers(const SceneBenchConfig& c, const GeometryFile& geometry, cons
         for (int f = 0; f < std::max(c.frames, kShortPassPairs); ++f) {
             ours1.push_back(trace_with_kdpm(g, p));
             theirs1.push_back(median_ms(1, [&] { embree.intersect(p.rays, hits); }));
-            ours16.push_back(trace_packets_with_kdpm(g, camera, kdpm_packet_hits));
+            ours16.push_back(trace_camera_packets(g, camera, kdpm_packet_hits));
             theirs16.push_back(median_ms(1, [&] { embree.intersect16(p.rays, c.width, c.height, packet_hits); }));
         }
         peers.rays = paired_times(ours1, theirs1);
@@ -494,6 +487,20 @@ SceneBenchResult run_scene_bench(const SceneBenchConfig& c) {
         out.mode_frames = measure_mode_frames(loaded.views(), modes);
     }
     const int all = c.threads.back();
+    if (c.instance_grid > 0) {
+        say(c, fmt_grid(c.instance_grid) + " instances: one as it is, one moved, the grid");
+        ThreadLimit limit(all);
+        InstanceBenchConfig ic;
+        ic.name = c.name;
+        ic.object = kdg;
+        ic.work_dir = c.work_dir;
+        ic.grid_x = ic.grid_z = c.instance_grid;
+        ic.width = c.width;
+        ic.height = c.height;
+        ic.pairs = kShortPassPairs;
+        ic.object_build_ms = out.geometry_build_ms[all];
+        out.instances = run_instance_bench(ic);
+    }
     out.peers.build_high.ours_ms = out.geometry_build_ms[all];
     out.peers.build_fast.ours_ms = out.geometry_build_fast_ms[all];
     out.peers.photon_trees.ours_ms = out.photon_tree_ms[all];

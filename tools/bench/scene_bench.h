@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "builders/geometry/sah/kd_build_params.h"
+#include "tools/bench/instance_bench.h"
 #include "tools/bench/median_time.h"
 #include "tools/bench/mode_frames.h"
 #include "tools/bench/photon_agreement.h"
@@ -27,6 +28,7 @@ struct SceneBenchConfig {
     bool peers = true;
     bool cuda = true;              // measure the CUDA backend when a device exists
     bool quiet = false;
+    std::uint32_t instance_grid = 100;  // the instanced grid is N x N copies of the scene; 0: no instance rows
     KdBuildParams build;           // SAH costs of every geometry build (quality: both are built)
 };
 
@@ -86,6 +88,7 @@ struct SceneBenchResult {
     std::string cuda_note;                     // "no CUDA device" etc.
     PeerFigures peers;
     ModeFrames mode_frames;                    // all threads, each lighting mode
+    InstanceFigures instances;                 // the scene as the object of scenes of instances
 };
 
 SceneBenchResult run_scene_bench(const SceneBenchConfig& config);

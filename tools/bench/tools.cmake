@@ -22,7 +22,7 @@ message(STATUS "kdpm-bench peers: Embree ${embree_FOUND}, nanoflann ${NANOFLANN_
 
 kdpm_tool(kdpm-bench bench/bench_main.cpp
           kdpm_bench_peers kdpm_render kdpm_geometry_builder kdpm_photon_shooter kdpm_builders_photons)
-target_sources(kdpm-bench PRIVATE bench/scene_bench.cpp bench/bench_report.cpp bench/host_description.cpp)
+target_sources(kdpm-bench PRIVATE bench/scene_bench.cpp bench/instance_bench.cpp bench/instance_report.cpp bench/bench_report.cpp bench/host_description.cpp)
 # The full frame per mode, and the viewer's frame made as kdpm-view makes it (kdpm_view has no window).
 target_sources(kdpm-bench PRIVATE bench/mode_frames.cpp bench/scenes_root.cpp)
 target_link_libraries(kdpm-bench PRIVATE kdpm_view kdpm_runtime_photons)
